@@ -1,2 +1,78 @@
-# stride_add_fmu is defined here (component packaging); see fmi/sdk.cmake for the SDK targets.
+# stride_add_fmu(NAME [IDENTIFIER id] SOURCES src... [LIBS lib...] [RESOURCES file...]
+#                [BUNDLE_DEPENDENCIES])
+#
+# Packages a component as an FMI 2.0 Co-Simulation FMU `${STRIDE_FMU_OUTPUT_DIR}/<NAME>.fmu`:
+#  - the component sources (with STRIDE_FMU(model) in one of them) are compiled once, with hidden
+#    visibility, and linked both into the FMU's shared library and into a generator executable
+#    that writes modelDescription.xml at build time from the component's variable table;
+#  - the shared library `binaries/linux64/<id>.so` exports only the fmi2* symbols (version
+#    script), carries libstdc++/libgcc statically and has RPATH=$ORIGIN;
+#  - with BUNDLE_DEPENDENCIES, every shared library it still needs beyond the C runtime is copied
+#    next to it, so the FMU runs on a machine without our Debian packages;
+#  - RESOURCES land in `resources/`.
+# Targets: <NAME>_fmu (the .so), <NAME>_fmu_model (objects), <NAME>_model_description
+# (generator), <NAME>_fmu_package (the archive). NAME is appended to the global property
+# STRIDE_FMU_NAMES, which the FMU conformance tests iterate.
 set_property(GLOBAL PROPERTY STRIDE_FMU_NAMES "")
+set(STRIDE_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}" CACHE INTERNAL "")
+
+function(stride_add_fmu name)
+  cmake_parse_arguments(arg "BUNDLE_DEPENDENCIES" "IDENTIFIER" "SOURCES;LIBS;RESOURCES" ${ARGN})
+  if(NOT arg_IDENTIFIER)
+    set(arg_IDENTIFIER ${name})
+  endif()
+  set(staging "${CMAKE_CURRENT_BINARY_DIR}/${name}.fmu.d")
+  set(archive "${STRIDE_FMU_OUTPUT_DIR}/${name}.fmu")
+
+  add_library(${name}_fmu_model OBJECT ${arg_SOURCES})
+  target_link_libraries(${name}_fmu_model PUBLIC stride::sdk ${arg_LIBS})
+  set_target_properties(${name}_fmu_model PROPERTIES CXX_VISIBILITY_PRESET hidden
+                                                     VISIBILITY_INLINES_HIDDEN ON)
+  stride_set_warnings(${name}_fmu_model)
+
+  add_library(${name}_fmu SHARED $<TARGET_OBJECTS:stride_sdk_glue>)
+  target_link_libraries(${name}_fmu PRIVATE ${name}_fmu_model)
+  set_target_properties(${name}_fmu PROPERTIES
+    OUTPUT_NAME ${arg_IDENTIFIER}
+    PREFIX ""
+    LIBRARY_OUTPUT_DIRECTORY "${staging}/binaries/linux64"
+    BUILD_RPATH "$ORIGIN"
+    LINK_DEPENDS "${STRIDE_CMAKE_DIR}/fmu_exports.map")
+  target_link_options(${name}_fmu PRIVATE
+    -static-libstdc++ -static-libgcc
+    -Wl,--exclude-libs,ALL
+    -Wl,--version-script=${STRIDE_CMAKE_DIR}/fmu_exports.map
+    -Wl,--no-undefined
+    -Wl,--disable-new-dtags)  # DT_RPATH, so bundled libraries find each other too
+
+  add_executable(${name}_model_description "${STRIDE_SDK_DIR}/src/model_description_main.cpp")
+  target_link_libraries(${name}_model_description PRIVATE ${name}_fmu_model)
+
+  set(copy_resources "")
+  foreach(resource ${arg_RESOURCES})
+    get_filename_component(resource "${resource}" ABSOLUTE)
+    list(APPEND copy_resources COMMAND ${CMAKE_COMMAND} -E copy "${resource}" "${staging}/resources/")
+  endforeach()
+  set(bundle "")
+  if(arg_BUNDLE_DEPENDENCIES)
+    set(bundle COMMAND ${CMAKE_COMMAND} -DLIBRARY=$<TARGET_FILE:${name}_fmu>
+                       -P "${STRIDE_CMAKE_DIR}/StrideBundleDependencies.cmake")
+  endif()
+
+  add_custom_command(
+    OUTPUT "${archive}"
+    COMMAND ${CMAKE_COMMAND} -E rm -rf "${staging}/resources"
+    COMMAND ${CMAKE_COMMAND} -E make_directory "${staging}/resources" "${STRIDE_FMU_OUTPUT_DIR}"
+    COMMAND $<TARGET_FILE:${name}_model_description> "${staging}/modelDescription.xml"
+    ${copy_resources}
+    ${bundle}
+    COMMAND ${CMAKE_COMMAND} -E rm -f "${archive}"
+    COMMAND ${CMAKE_COMMAND} -E chdir "${staging}"
+            ${CMAKE_COMMAND} -E tar cf "${archive}" --format=zip
+            modelDescription.xml binaries resources
+    DEPENDS ${name}_fmu ${name}_model_description ${arg_RESOURCES}
+    COMMENT "Packaging ${name}.fmu"
+    VERBATIM)
+  add_custom_target(${name}_fmu_package ALL DEPENDS "${archive}")
+  set_property(GLOBAL APPEND PROPERTY STRIDE_FMU_NAMES ${name})
+endfunction()

@@ -1,0 +1,159 @@
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+#include "reporter.hpp"
+#include "stride/fmi_check/fmu_check.hpp"
+
+namespace stride::fmi_check {
+
+namespace {
+
+constexpr std::array k_rules{
+    // §2.1 archive
+    rule_description{"archive.open", "the file is a readable ZIP archive"},
+    rule_description{"archive.extension", "the file name ends in .fmu (warning)"},
+    rule_description{"archive.format",
+                     "no ZIP64, split or spanned archive; version needed to extract <= 2.0"},
+    rule_description{"archive.compression", "every entry is stored (0) or deflated (8)"},
+    rule_description{"archive.encryption", "no entry is encrypted"},
+    rule_description{"archive.link", "no entry is a symbolic link"},
+    rule_description{"archive.backslash", "entry names use forward slashes only"},
+    rule_description{"archive.path", "no absolute entry names, no '..' components"},
+    rule_description{"archive.duplicate_entry", "no entry name occurs twice"},
+    rule_description{"archive.name_ascii", "entry names are ASCII (warning)"},
+    rule_description{"archive.model_description", "modelDescription.xml is at the archive root"},
+    rule_description{"archive.binary", "binaries/linux64/<modelIdentifier>.so is present"},
+    rule_description{"archive.platform_dir",
+                     "no FMI 3 platform tuple (x86_64-linux, ...) for a platform FMI 2 names"},
+    // §2.2 modelDescription.xml
+    rule_description{"xml.well_formed", "modelDescription.xml is well-formed XML"},
+    rule_description{"schema.attribute", "no attribute the FMI 2.0 schema does not define"},
+    rule_description{"root.element", "the root element is fmiModelDescription"},
+    rule_description{"root.fmi_version", "fmiVersion is \"2.0\""},
+    rule_description{"root.model_name", "modelName is given"},
+    rule_description{"root.guid", "guid is given and not empty"},
+    rule_description{"root.generation_date", "generationDateAndTime is an xs:dateTime"},
+    rule_description{"root.attribute_value",
+                     "variableNamingConvention is flat|structured, numberOfEventIndicators "
+                     "unsigned"},
+    rule_description{"structure.child_order",
+                     "child elements are known, unique and in the order of the XSD sequence"},
+    rule_description{"structure.model_structure", "the ModelStructure element is present"},
+    rule_description{"cosim.missing", "a CoSimulation element is present"},
+    rule_description{"cosim.model_identifier", "CoSimulation@modelIdentifier is a C identifier"},
+    rule_description{"cosim.flag", "capability flags are xs:boolean, maxOutputDerivativeOrder "
+                                   "unsigned"},
+    rule_description{"type_definitions.name", "SimpleType names are given and unique"},
+    rule_description{"log_categories.name", "every Category has a name"},
+    rule_description{"log_categories.unique", "Category names are unique"},
+    rule_description{"default_experiment.value", "DefaultExperiment attributes are numbers"},
+    rule_description{"default_experiment.interval", "startTime < stopTime"},
+    rule_description{"default_experiment.step_size", "stepSize > 0"},
+    rule_description{"default_experiment.tolerance", "tolerance > 0"},
+    rule_description{"variables.empty", "ModelVariables is present with at least one variable"},
+    rule_description{"variable.name", "every ScalarVariable has a non-empty name"},
+    rule_description{"variable.name_unique", "variable names are unique"},
+    rule_description{"variable.value_reference", "valueReference is an xs:unsignedInt"},
+    rule_description{"variable.type",
+                     "exactly one type child Real|Integer|Boolean|String|Enumeration; "
+                     "Enumeration has declaredType"},
+    rule_description{"variable.declared_type",
+                     "declaredType names a SimpleType of the same base type"},
+    rule_description{"variable.causality", "causality is a legal value"},
+    rule_description{"variable.variability", "variability is a legal value"},
+    rule_description{"variable.causality_variability",
+                     "the causality x variability combination is allowed by the spec table"},
+    rule_description{"variable.initial",
+                     "initial is a legal value and allowed for the causality x variability"},
+    rule_description{"variable.start_required",
+                     "start is given for initial exact|approx, inputs and constants"},
+    rule_description{"variable.start_forbidden",
+                     "no start for initial calculated or causality independent"},
+    rule_description{"variable.value", "start/min/max/nominal parse as the variable's type"},
+    rule_description{"variable.continuous_non_real", "only Real variables are continuous"},
+    rule_description{"variable.range", "min <= max and min <= start <= max"},
+    rule_description{"variable.independent",
+                     "at most one independent variable, and it is a Real"},
+    rule_description{"variable.derivative",
+                     "Real@derivative is the 1-based index of a Real variable"},
+    rule_description{"variable.alias_start",
+                     "of the non-constant variables sharing valueReference and type, at most "
+                     "one has start"},
+    rule_description{"variable.array_index",
+                     "array elements name[i] of a group start at 1 and are contiguous "
+                     "(warning)"},
+    rule_description{"outputs.index", "Outputs/Unknown@index is a 1-based index in range"},
+    rule_description{"outputs.missing", "every output variable is listed in Outputs"},
+    rule_description{"outputs.not_output", "Outputs lists only output variables"},
+    rule_description{"outputs.order", "Outputs follows ModelVariables order, no duplicates"},
+    rule_description{"derivatives.index",
+                     "Derivatives/Unknown@index is in range and names a Real with derivative"},
+    rule_description{"dependencies.index", "dependencies are 1-based indices in range"},
+    rule_description{"dependencies.order",
+                     "dependencies are sorted ascending without duplicates"},
+    rule_description{"dependencies.kind",
+                     "dependenciesKind has one legal kind per dependency"},
+    rule_description{"initial_unknowns.index",
+                     "InitialUnknowns/Unknown@index is a 1-based index in range"},
+    rule_description{"initial_unknowns.missing",
+                     "InitialUnknowns lists every output with initial approx|calculated, every "
+                     "calculatedParameter (and states/derivatives)"},
+    rule_description{"initial_unknowns.extra", "InitialUnknowns lists nothing else"},
+    rule_description{"initial_unknowns.order",
+                     "InitialUnknowns is sorted by index without duplicates"},
+    rule_description{"initial_unknowns.kind",
+                     "InitialUnknowns dependenciesKind is dependent|constant only"},
+};
+
+}  // namespace
+
+std::span<const rule_description> all_rules() { return k_rules; }
+
+std::string_view to_string(finding::severity level) {
+  return level == finding::severity::error ? "error" : "warning";
+}
+
+std::string format_finding(std::string_view file, const finding& f) {
+  std::string line(file);
+  line += ": ";
+  line += to_string(f.level);
+  line += ": [";
+  line += f.rule;
+  line += "] ";
+  line += f.message;
+  return line;
+}
+
+bool has_errors(std::span<const finding> findings) {
+  return std::any_of(findings.begin(), findings.end(),
+                     [](const finding& f) { return f.level == finding::severity::error; });
+}
+
+namespace detail {
+
+void reporter::error(std::string_view rule, std::string message) {
+  add(finding::severity::error, rule, std::move(message));
+}
+
+void reporter::warning(std::string_view rule, std::string message) {
+  add(finding::severity::warning, rule, std::move(message));
+}
+
+void reporter::append(std::vector<finding> more) {
+  for (auto& f : more) findings_.push_back(std::move(f));
+}
+
+void reporter::add(finding::severity level, std::string_view rule, std::string message) {
+  const auto rules = all_rules();
+  if (std::none_of(rules.begin(), rules.end(),
+                   [&](const rule_description& r) { return r.id == rule; })) {
+    throw std::logic_error("stride::fmi_check: rule id \"" + std::string(rule) +
+                           "\" is not in all_rules()");
+  }
+  findings_.push_back(finding{level, std::string(rule), std::move(message)});
+}
+
+}  // namespace detail
+
+}  // namespace stride::fmi_check

@@ -1,0 +1,42 @@
+// Parsers for the XML Schema value types used by fmi2ModelDescription.xsd.
+#ifndef STRIDE_FMI_CHECK_XS_VALUES_HPP
+#define STRIDE_FMI_CHECK_XS_VALUES_HPP
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stride::fmi_check::detail {
+
+/// Strips XML whitespace (space, tab, CR, LF) from both ends.
+std::string_view trim(std::string_view s);
+
+/// Splits on XML whitespace, dropping empty pieces.
+std::vector<std::string_view> split_ws(std::string_view s);
+
+/// xs:boolean: "true", "false", "1", "0" (surrounding whitespace allowed).
+std::optional<bool> parse_xs_boolean(std::string_view s);
+
+/// xs:unsignedInt: optional '+', decimal digits, at most 4294967295.
+std::optional<std::uint32_t> parse_xs_unsigned_int(std::string_view s);
+
+/// xs:int: optional sign, decimal digits, 32-bit range.
+std::optional<std::int32_t> parse_xs_int(std::string_view s);
+
+/// xs:double: decimal or exponent notation, "INF", "-INF", "+INF", "NaN".
+std::optional<double> parse_xs_double(std::string_view s);
+
+/// xs:dateTime: [-]YYYY-MM-DDThh:mm:ss[.fff][Z|(+|-)hh:mm], with range checks of every field.
+bool is_xs_date_time(std::string_view s);
+
+/// [A-Za-z_][A-Za-z0-9_]*
+bool is_c_identifier(std::string_view s);
+
+/// Quotes a value for a message: "name".
+std::string quoted(std::string_view s);
+
+}  // namespace stride::fmi_check::detail
+
+#endif  // STRIDE_FMI_CHECK_XS_VALUES_HPP

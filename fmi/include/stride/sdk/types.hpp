@@ -1,0 +1,58 @@
+// Basic vocabulary of the component SDK: FMI variable attributes, simulation time and the
+// fixed-capacity string used to keep String variables inside a trivially copyable data struct.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace stride::sdk {
+
+/// Simulation time in integer nanoseconds: no drift from accumulated doubles.
+using time_ns = std::int64_t;
+inline constexpr time_ns ns_per_second = 1'000'000'000;
+
+/// Converts seconds (as FMI passes them) to integer nanoseconds, rounding to nearest.
+time_ns to_time_ns(double seconds);
+inline double to_seconds(time_ns t) { return static_cast<double>(t) / 1e9; }
+
+enum class value_type : std::uint8_t { real, integer, boolean, string };
+enum class causality : std::uint8_t { parameter, calculated_parameter, input, output, local };
+enum class variability : std::uint8_t { constant, fixed, tunable, discrete, continuous };
+enum class initial_kind : std::uint8_t { none, exact, approx, calculated };
+
+const char* to_string(value_type t);
+const char* to_string(causality c);
+const char* to_string(variability v);
+const char* to_string(initial_kind i);
+
+/// A string with fixed capacity, so that String variables can live in a trivially copyable
+/// struct (FMU state = struct copy). Setting a longer value is an error, never a truncation.
+template <std::size_t Capacity>
+struct fixed_string {
+  char text[Capacity + 1] = {};
+
+  static constexpr std::size_t capacity() { return Capacity; }
+  std::string_view view() const { return std::string_view(text); }
+  const char* c_str() const { return text; }
+  bool empty() const { return text[0] == '\0'; }
+
+  /// Throws std::length_error when `value` does not fit.
+  void assign(std::string_view value) {
+    if (value.size() > Capacity) {
+      throw std::length_error("string of " + std::to_string(value.size()) +
+                              " characters exceeds the capacity of " + std::to_string(Capacity));
+    }
+    std::memcpy(text, value.data(), value.size());
+    text[value.size()] = '\0';
+  }
+};
+
+/// Default capacity for paths and other free text in component data.
+using text = fixed_string<1023>;
+
+}  // namespace stride::sdk

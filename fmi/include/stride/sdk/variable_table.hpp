@@ -1,0 +1,185 @@
+// The ONE variable table of a component. Each entry says what a variable is (name, type,
+// causality, variability, initial, unit, range, description) and where its value lives (a byte
+// offset into the component's data struct). From it come the fmi2Get/Set dispatch, the checks
+// on sets, the start values and modelDescription.xml.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "stride/sdk/types.hpp"
+
+namespace stride::sdk {
+
+/// One scalar variable. Array members of the data struct become N variables `name[1]`..`name[N]`.
+struct variable {
+  std::string name;
+  std::uint32_t value_reference = 0;
+  value_type type = value_type::real;
+  causality causality_kind = causality::local;
+  variability variability_kind = variability::continuous;
+  initial_kind initial = initial_kind::none;
+  std::size_t offset = 0;           // where the value lives inside the data struct
+  std::size_t string_capacity = 0;  // for String variables stored as fixed_string
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool has_min = false;
+  bool has_max = false;
+  std::string unit;
+  std::string description;
+  /// Inputs this output depends on directly (feedthrough), by value reference.
+  std::vector<std::uint32_t> direct_dependencies;
+  /// Extra validation for Real/Integer values beyond min/max; throws std::invalid_argument.
+  std::function<void(double)> check;
+
+  bool has_start() const {
+    return causality_kind == causality::input || initial == initial_kind::exact ||
+           initial == initial_kind::approx || variability_kind == variability::constant;
+  }
+};
+
+/// The finished, immutable table plus a default-constructed data struct holding start values.
+class variable_table {
+ public:
+  variable_table(std::vector<variable> vars, std::shared_ptr<const void> defaults,
+                 std::size_t data_size);
+
+  const std::vector<variable>& variables() const { return vars_; }
+  /// nullptr when no variable has this value reference and type.
+  const variable* find(std::uint32_t value_reference) const {
+    return value_reference < by_vr_.size() ? by_vr_[value_reference] : nullptr;
+  }
+  const variable* find(std::string_view name) const;
+  /// Position (1-based) of the variable in ModelVariables.
+  std::size_t index_of(const variable& v) const { return static_cast<std::size_t>(&v - vars_.data()) + 1; }
+  /// The data struct as default-constructed: the start values.
+  const void* defaults() const { return defaults_.get(); }
+  std::size_t data_size() const { return data_size_; }
+
+ private:
+  std::vector<variable> vars_;
+  std::vector<const variable*> by_vr_;
+  std::shared_ptr<const void> defaults_;
+  std::size_t data_size_;
+};
+
+namespace detail {
+template <class T>
+struct storage_traits;
+template <>
+struct storage_traits<double> {
+  static constexpr value_type type = value_type::real;
+};
+template <>
+struct storage_traits<int> {
+  static constexpr value_type type = value_type::integer;
+};
+template <>
+struct storage_traits<bool> {
+  static constexpr value_type type = value_type::boolean;
+};
+template <std::size_t N>
+struct storage_traits<fixed_string<N>> {
+  static constexpr value_type type = value_type::string;
+};
+}  // namespace detail
+
+class table_builder_base;
+
+/// Handle on one or more just-declared variables (an array declares several); every call
+/// applies to all of them.
+class variable_group {
+ public:
+  variable_group(table_builder_base& builder, std::size_t first, std::size_t count)
+      : builder_(&builder), first_(first), count_(count) {}
+
+  variable_group& parameter();             // fixed parameter (initial exact)
+  variable_group& tunable();               // parameter that may change during the run
+  variable_group& calculated_parameter();  // computed from parameters during initialization
+  variable_group& input();
+  variable_group& output();                // initial calculated, no feedthrough by default
+  variable_group& local();
+  variable_group& discrete();              // variability discrete instead of continuous
+  variable_group& unit(std::string u);
+  variable_group& describe(std::string d);
+  variable_group& min(double v);
+  variable_group& max(double v);
+  variable_group& range(double lo, double hi) { return min(lo).max(hi); }
+  /// Extra validation (e.g. an exclusive bound) run on every set; throws std::invalid_argument.
+  variable_group& check(std::function<void(double)> f);
+  /// Declares direct feedthrough from the named inputs (each element i depends on all of them).
+  variable_group& depends_on(std::vector<std::string> input_names);
+
+ private:
+  template <class F>
+  variable_group& each(F f);
+  table_builder_base* builder_;
+  std::size_t first_;
+  std::size_t count_;
+};
+
+class table_builder_base {
+ public:
+  variable_table finish(std::shared_ptr<const void> defaults, std::size_t data_size);
+
+ protected:
+  friend class variable_group;
+  variable_group add(std::string name, value_type type, std::size_t offset, std::size_t count,
+                     std::size_t stride, std::size_t string_capacity, bool is_array);
+  std::vector<variable> vars_;
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> pending_dependencies_;
+};
+
+/// Builds the table of a component whose values live in `Data` (trivially copyable, default
+/// member initialisers = start values).
+template <class Data>
+class table_builder : public table_builder_base {
+  static_assert(std::is_trivially_copyable_v<Data>, "component data must be trivially copyable");
+
+ public:
+  table_builder() : defaults_(std::make_shared<Data>()) {}
+
+  /// A scalar member: `t.add("gain", &data::gain).parameter().tunable()`.
+  template <class T>
+  variable_group add(std::string name, T Data::*member) {
+    return table_builder_base::add(std::move(name), detail::storage_traits<T>::type,
+                                   offset_of(member), 1, sizeof(T), string_capacity<T>(), false);
+  }
+  /// An array member: declares `name[1]`..`name[N]` with consecutive value references.
+  template <class T, std::size_t N>
+  variable_group add(std::string name, T (Data::*member)[N]) {
+    return table_builder_base::add(std::move(name), detail::storage_traits<T>::type,
+                                   offset_of(member), N, sizeof(T), string_capacity<T>(), true);
+  }
+
+  variable_table finish() { return table_builder_base::finish(defaults_, sizeof(Data)); }
+  const Data& defaults() const { return *defaults_; }
+
+ private:
+  template <class M>
+  std::size_t offset_of(M Data::*member) const {
+    const Data& d = *defaults_;
+    return static_cast<std::size_t>(reinterpret_cast<const char*>(&(d.*member)) -
+                                    reinterpret_cast<const char*>(&d));
+  }
+  template <class T>
+  static constexpr std::size_t string_capacity() {
+    if constexpr (detail::storage_traits<T>::type == value_type::string) {
+      return T::capacity();
+    } else {
+      return 0;
+    }
+  }
+  std::shared_ptr<Data> defaults_;
+};
+
+}  // namespace stride::sdk

@@ -1,0 +1,683 @@
+// The FMI 2.0 Co-Simulation functions, written once for every Stride component. Each function
+// checks the calling sequence against the lifecycle table, then dispatches through the
+// component's variable table or to its model. Nothing here knows any particular component.
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "instance.hpp"
+#include "lifecycle.hpp"
+#include "start_value.hpp"
+#include "stride/fmi2/fmi2_api.h"
+#include "stride/sdk/model_description.hpp"
+
+namespace stride::sdk::glue {
+namespace {
+
+const fmu_definition& definition() { return detail::registered_fmu(); }
+
+const std::string& guid() {
+  static const std::string value = compute_guid(definition());
+  return value;
+}
+
+std::vector<std::string> known_log_categories() {
+  std::vector<std::string> names = {"logStatusWarning", "logStatusError", "logStatusFatal",
+                                    "logEvents", "logCalls"};
+  for (const auto& category : definition().info.log_categories) names.push_back(category.first);
+  return names;
+}
+
+// Returns the instance when `f` may be called in its current state, otherwise logs and
+// returns nullptr (the caller answers fmi2Error; the state does not change).
+instance* enter(fmi2Component c, function f, const char* name) {
+  auto* inst = static_cast<instance*>(c);
+  if (inst == nullptr) return nullptr;
+  if ((inst->state & allowed_states(f)) == 0) {
+    inst->log.error(std::string(name) + ": illegal call in state " + state_name(inst->state) +
+                    " (allowed in: " + state_list(allowed_states(f)) + ")");
+    return nullptr;
+  }
+  if (inst->log.calls_enabled()) inst->log.info("logCalls", name);
+  return inst;
+}
+
+fmi2Status fail(instance& inst, const std::string& message) {
+  inst.log.error(message);
+  return fmi2Error;
+}
+
+// A component threw: the instance can no longer be trusted.
+fmi2Status component_failed(instance& inst, const char* function_name, const std::exception& e) {
+  inst.state = error;
+  return fail(inst, std::string(function_name) + ": " + e.what());
+}
+
+bool settable(const variable& v, std::uint32_t state) {
+  if (v.variability_kind == variability::constant) return false;
+  if (state & (instantiated | initialization_mode)) {
+    return v.causality_kind == causality::input || v.initial == initial_kind::exact ||
+           v.initial == initial_kind::approx;
+  }
+  if (state & step_complete) {
+    return v.causality_kind == causality::input ||
+           (v.causality_kind == causality::parameter &&
+            v.variability_kind == variability::tunable);
+  }
+  return false;
+}
+
+std::string describe(const variable& v) {
+  return "'" + v.name + "' (" + to_string(v.causality_kind) + ", " +
+         to_string(v.variability_kind) + ")";
+}
+
+// Looks up vr as a variable of `type`; logs and returns nullptr otherwise.
+const variable* lookup(instance& inst, const char* function_name, fmi2ValueReference vr,
+                       value_type type) {
+  const variable* v = inst.fmu.table.find(vr);
+  if (v == nullptr || v->type != type) {
+    inst.log.error(std::string(function_name) + ": no " + to_string(type) +
+                   " variable has value reference " + std::to_string(vr));
+    return nullptr;
+  }
+  return v;
+}
+
+bool null_arguments(instance& inst, const char* function_name, size_t n, const void* a,
+                    const void* b) {
+  if (n > 0 && (a == nullptr || b == nullptr)) {
+    inst.log.error(std::string(function_name) + ": null array argument");
+    return true;
+  }
+  return false;
+}
+
+// Checks a numeric value against the variable's range and extra check; "" when acceptable.
+std::string range_problem(const variable& v, double x) {
+  if (!std::isfinite(x)) return "value is not a finite number";
+  if (x < v.min || x > v.max) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "value %.17g is outside [%.17g, %.17g]", x, v.min, v.max);
+    return buffer;
+  }
+  if (v.check) {
+    try {
+      v.check(x);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+  }
+  return {};
+}
+
+bool refresh_values(instance& inst, const char* function_name) {
+  if (!inst.values_dirty) return true;
+  try {
+    inst.component->calculate_values();
+    inst.values_dirty = false;
+    return true;
+  } catch (const std::exception& e) {
+    component_failed(inst, function_name, e);
+    return false;
+  }
+}
+
+template <class Stored, class FmiValue, class Convert>
+fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                      FmiValue value[], value_type type, const char* name, Convert convert) {
+  instance* inst = enter(c, function::get_value, name);
+  if (inst == nullptr || null_arguments(*inst, name, nvr, vr, value)) return fmi2Error;
+  if (nvr > 0 && !refresh_values(*inst, name)) return fmi2Error;
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, name, vr[i], type);
+    if (v == nullptr) return fmi2Error;
+    value[i] = convert(read_value<Stored>(inst->data, v->offset));
+  }
+  return fmi2OK;
+}
+
+// Validates and stores one value; `store` writes it into the data struct.
+template <class Store>
+fmi2Status set_one(instance& inst, const char* name, const variable& v, double numeric,
+                   bool numeric_check, Store store) {
+  if (!settable(v, inst.state)) {
+    return fail(inst, std::string(name) + ": variable " + describe(v) +
+                          " cannot be set in state " + state_name(inst.state));
+  }
+  if (numeric_check) {
+    const std::string problem = range_problem(v, numeric);
+    if (!problem.empty()) return fail(inst, std::string(name) + ": '" + v.name + "': " + problem);
+  }
+  try {
+    store();
+    inst.component->on_set(v);
+  } catch (const std::exception& e) {
+    return fail(inst, std::string(name) + ": '" + v.name + "': " + e.what());
+  }
+  inst.values_dirty = true;
+  return fmi2OK;
+}
+
+constexpr char k_state_magic[8] = {'S', 'T', 'R', 'D', 'S', 'T', 'A', '1'};
+
+struct state_header {
+  char magic[8];
+  char guid[40];
+  time_ns time;
+  std::uint32_t lifecycle;
+  std::uint8_t terminate_requested;
+};
+
+std::vector<std::byte> serialize(instance& inst) {
+  state_header header{};
+  std::memcpy(header.magic, k_state_magic, sizeof header.magic);
+  std::strncpy(header.guid, guid().c_str(), sizeof header.guid - 1);
+  header.time = inst.time;
+  header.lifecycle = inst.state;
+  header.terminate_requested = inst.terminate_requested ? 1 : 0;
+  std::vector<std::byte> body = inst.component->save_state();
+  std::vector<std::byte> bytes(sizeof header + body.size());
+  std::memcpy(bytes.data(), &header, sizeof header);
+  if (!body.empty()) std::memcpy(bytes.data() + sizeof header, body.data(), body.size());
+  return bytes;
+}
+
+// "" when the bytes are a state of this FMU, otherwise the reason.
+std::string state_problem(const std::byte* bytes, size_t size) {
+  if (bytes == nullptr || size < sizeof(state_header)) return "too short to be an FMU state";
+  state_header header;
+  std::memcpy(&header, bytes, sizeof header);
+  if (std::memcmp(header.magic, k_state_magic, sizeof header.magic) != 0) {
+    return "not a Stride FMU state";
+  }
+  if (std::strncmp(header.guid, guid().c_str(), sizeof header.guid) != 0) {
+    return "state belongs to another FMU (GUID " + std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
+  }
+  return {};
+}
+
+saved_state* find_state(instance& inst, fmi2FMUstate s) {
+  auto* state = static_cast<saved_state*>(s);
+  return inst.saved_states.count(state) ? state : nullptr;
+}
+
+// "file:///a/b" or "file:/a/b" → "/a/b", with %XX decoded.
+std::string path_from_uri(const char* uri) {
+  if (uri == nullptr) return {};
+  std::string s(uri);
+  if (s.rfind("file://", 0) == 0) {
+    s = s.substr(7);
+    if (!s.empty() && s[0] != '/') s = s.substr(s.find('/'));  // drop an authority part
+  } else if (s.rfind("file:", 0) == 0) {
+    s = s.substr(5);
+  }
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '%' && i + 2 < s.size()) {
+      out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += s[i];
+    }
+  }
+  while (out.size() > 1 && out.back() == '/') out.pop_back();
+  return out;
+}
+
+fmi2Status unsupported(fmi2Component c, function f, const char* name, const char* why) {
+  instance* inst = enter(c, f, name);
+  if (inst == nullptr) return fmi2Error;
+  return fail(*inst, std::string(name) + ": not supported (" + why + ")");
+}
+
+}  // namespace
+
+instance::instance(const fmu_definition& definition, std::string name, std::string resource_dir,
+                   const fmi2CallbackFunctions& callbacks)
+    : fmu(definition), log(callbacks.logger, callbacks.componentEnvironment, name) {
+  context.instance_name = std::move(name);
+  context.resource_dir = std::move(resource_dir);
+  context.log = &log;
+}
+
+void instance::create_component() {
+  component = fmu.create(context);
+  data = static_cast<char*>(component->data());
+  values_dirty = true;
+}
+
+}  // namespace stride::sdk::glue
+
+using namespace stride::sdk;
+using namespace stride::sdk::glue;
+
+extern "C" {
+
+const char* fmi2GetTypesPlatform(void) { return STRIDE_FMI2_TYPES_PLATFORM; }
+
+const char* fmi2GetVersion(void) { return STRIDE_FMI2_VERSION; }
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation,
+                              const fmi2CallbackFunctions* functions, fmi2Boolean visible,
+                              fmi2Boolean loggingOn) {
+  (void)visible;
+  if (functions == nullptr) return nullptr;
+  const std::string name = instanceName ? instanceName : "";
+  fmi_logger early(functions->logger, functions->componentEnvironment, name);
+  if (instanceName == nullptr || name.empty()) {
+    early.error("fmi2Instantiate: missing instance name");
+    return nullptr;
+  }
+  if (fmuType != fmi2CoSimulation) {
+    early.error("fmi2Instantiate: only Co-Simulation is supported");
+    return nullptr;
+  }
+  if (fmuGUID == nullptr || guid() != fmuGUID) {
+    early.error(std::string("fmi2Instantiate: wrong GUID ") + (fmuGUID ? fmuGUID : "(null)") +
+                ", this binary is " + guid());
+    return nullptr;
+  }
+  try {
+    auto inst = std::make_unique<instance>(definition(), name, path_from_uri(fmuResourceLocation),
+                                           *functions);
+    inst->log.enable_all(loggingOn != fmi2False);
+    inst->create_component();
+    inst->log.info("logEvents", "instantiated (resources: " + inst->context.resource_dir + ")");
+    return inst.release();
+  } catch (const std::exception& e) {
+    early.error(std::string("fmi2Instantiate: ") + e.what());
+    return nullptr;
+  }
+}
+
+void fmi2FreeInstance(fmi2Component c) {
+  instance* inst = enter(c, function::free_instance, "fmi2FreeInstance");
+  if (inst == nullptr) return;
+  for (saved_state* s : inst->saved_states) delete s;
+  delete inst;
+}
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
+  instance* inst = enter(c, function::set_debug_logging, "fmi2SetDebugLogging");
+  if (inst == nullptr) return fmi2Error;
+  if (nCategories > 0 && categories == nullptr) {
+    return fail(*inst, "fmi2SetDebugLogging: null categories");
+  }
+  std::vector<std::string> names;
+  for (size_t i = 0; i < nCategories; ++i) {
+    if (categories[i] == nullptr) return fail(*inst, "fmi2SetDebugLogging: null category");
+    names.emplace_back(categories[i]);
+  }
+  const std::string unknown =
+      inst->log.set_debug_logging(loggingOn != fmi2False, names, known_log_categories());
+  if (!unknown.empty()) {
+    return fail(*inst, "fmi2SetDebugLogging: unknown log category '" + unknown + "'");
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined,
+                               fmi2Real stopTime) {
+  (void)toleranceDefined;
+  (void)tolerance;
+  instance* inst = enter(c, function::setup_experiment, "fmi2SetupExperiment");
+  if (inst == nullptr) return fmi2Error;
+  if (!std::isfinite(startTime) || (stopTimeDefined && !(stopTime >= startTime))) {
+    return fail(*inst, "fmi2SetupExperiment: invalid start/stop time");
+  }
+  inst->time = to_time_ns(startTime);
+  return fmi2OK;
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+  instance* inst = enter(c, function::enter_initialization_mode, "fmi2EnterInitializationMode");
+  if (inst == nullptr) return fmi2Error;
+  try {
+    inst->component->enter_initialization();
+  } catch (const std::exception& e) {
+    return component_failed(*inst, "fmi2EnterInitializationMode", e);
+  }
+  inst->state = initialization_mode;
+  return fmi2OK;
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
+  instance* inst = enter(c, function::exit_initialization_mode, "fmi2ExitInitializationMode");
+  if (inst == nullptr) return fmi2Error;
+  try {
+    inst->component->exit_initialization();
+    inst->values_dirty = false;
+  } catch (const std::exception& e) {
+    return component_failed(*inst, "fmi2ExitInitializationMode", e);
+  }
+  inst->state = step_complete;
+  return fmi2OK;
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) {
+  instance* inst = enter(c, function::terminate, "fmi2Terminate");
+  if (inst == nullptr) return fmi2Error;
+  try {
+    inst->component->terminate();
+  } catch (const std::exception& e) {
+    return component_failed(*inst, "fmi2Terminate", e);
+  }
+  inst->state = terminated;
+  return fmi2OK;
+}
+
+fmi2Status fmi2Reset(fmi2Component c) {
+  instance* inst = enter(c, function::reset, "fmi2Reset");
+  if (inst == nullptr) return fmi2Error;
+  try {
+    inst->component.reset();
+    inst->create_component();
+  } catch (const std::exception& e) {
+    return component_failed(*inst, "fmi2Reset", e);
+  }
+  inst->state = instantiated;
+  inst->time = 0;
+  inst->terminate_requested = false;
+  return fmi2OK;
+}
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       fmi2Real value[]) {
+  return get_values<double>(c, vr, nvr, value, value_type::real, "fmi2GetReal",
+                            [](double x) { return x; });
+}
+
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Integer value[]) {
+  return get_values<int>(c, vr, nvr, value, value_type::integer, "fmi2GetInteger",
+                         [](int x) { return x; });
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) {
+  return get_values<bool>(c, vr, nvr, value, value_type::boolean, "fmi2GetBoolean",
+                          [](bool x) { return x ? fmi2True : fmi2False; });
+}
+
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[]) {
+  instance* inst = enter(c, function::get_value, "fmi2GetString");
+  if (inst == nullptr || null_arguments(*inst, "fmi2GetString", nvr, vr, value)) return fmi2Error;
+  if (nvr > 0 && !refresh_values(*inst, "fmi2GetString")) return fmi2Error;
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, "fmi2GetString", vr[i], value_type::string);
+    if (v == nullptr) return fmi2Error;
+    value[i] = string_at(inst->data, v->offset);
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       const fmi2Real value[]) {
+  instance* inst = enter(c, function::set_real, "fmi2SetReal");
+  if (inst == nullptr || null_arguments(*inst, "fmi2SetReal", nvr, vr, value)) return fmi2Error;
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, "fmi2SetReal", vr[i], value_type::real);
+    if (v == nullptr) return fmi2Error;
+    const double x = value[i];
+    const fmi2Status s = set_one(*inst, "fmi2SetReal", *v, x, true, [&] {
+      std::memcpy(inst->data + v->offset, &x, sizeof x);
+    });
+    if (s != fmi2OK) return s;
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Integer value[]) {
+  instance* inst = enter(c, function::set_other, "fmi2SetInteger");
+  if (inst == nullptr || null_arguments(*inst, "fmi2SetInteger", nvr, vr, value)) {
+    return fmi2Error;
+  }
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, "fmi2SetInteger", vr[i], value_type::integer);
+    if (v == nullptr) return fmi2Error;
+    const int x = value[i];
+    const fmi2Status s = set_one(*inst, "fmi2SetInteger", *v, x, true, [&] {
+      std::memcpy(inst->data + v->offset, &x, sizeof x);
+    });
+    if (s != fmi2OK) return s;
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Boolean value[]) {
+  instance* inst = enter(c, function::set_other, "fmi2SetBoolean");
+  if (inst == nullptr || null_arguments(*inst, "fmi2SetBoolean", nvr, vr, value)) {
+    return fmi2Error;
+  }
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, "fmi2SetBoolean", vr[i], value_type::boolean);
+    if (v == nullptr) return fmi2Error;
+    const bool x = value[i] != fmi2False;
+    const fmi2Status s = set_one(*inst, "fmi2SetBoolean", *v, 0.0, false, [&] {
+      std::memcpy(inst->data + v->offset, &x, sizeof x);
+    });
+    if (s != fmi2OK) return s;
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         const fmi2String value[]) {
+  instance* inst = enter(c, function::set_other, "fmi2SetString");
+  if (inst == nullptr || null_arguments(*inst, "fmi2SetString", nvr, vr, value)) {
+    return fmi2Error;
+  }
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, "fmi2SetString", vr[i], value_type::string);
+    if (v == nullptr) return fmi2Error;
+    if (value[i] == nullptr) return fail(*inst, "fmi2SetString: '" + v->name + "': null string");
+    const size_t length = std::strlen(value[i]);
+    const fmi2Status s = set_one(*inst, "fmi2SetString", *v, 0.0, false, [&] {
+      if (length > v->string_capacity) {
+        throw std::length_error("string of " + std::to_string(length) +
+                                " characters exceeds the capacity of " +
+                                std::to_string(v->string_capacity));
+      }
+      std::memcpy(inst->data + v->offset, value[i], length + 1);
+    });
+    if (s != fmi2OK) return s;
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
+  instance* inst = enter(c, function::fmu_state, "fmi2GetFMUstate");
+  if (inst == nullptr) return fmi2Error;
+  if (FMUstate == nullptr) return fail(*inst, "fmi2GetFMUstate: null FMUstate pointer");
+  saved_state* target = nullptr;
+  if (*FMUstate != nullptr) {
+    target = find_state(*inst, *FMUstate);
+    if (target == nullptr) return fail(*inst, "fmi2GetFMUstate: unknown FMUstate to overwrite");
+  }
+  try {
+    std::vector<std::byte> bytes = serialize(*inst);
+    if (target == nullptr) {
+      target = new saved_state;
+      inst->saved_states.insert(target);
+    }
+    target->bytes = std::move(bytes);
+  } catch (const std::exception& e) {
+    return fail(*inst, std::string("fmi2GetFMUstate: ") + e.what());
+  }
+  *FMUstate = target;
+  return fmi2OK;
+}
+
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
+  instance* inst = enter(c, function::fmu_state, "fmi2SetFMUstate");
+  if (inst == nullptr) return fmi2Error;
+  saved_state* s = find_state(*inst, FMUstate);
+  if (s == nullptr) return fail(*inst, "fmi2SetFMUstate: unknown FMUstate");
+  state_header header;
+  std::memcpy(&header, s->bytes.data(), sizeof header);
+  try {
+    inst->component->restore_state(
+        std::span<const std::byte>(s->bytes).subspan(sizeof(state_header)));
+  } catch (const std::exception& e) {
+    return component_failed(*inst, "fmi2SetFMUstate", e);
+  }
+  inst->time = header.time;
+  inst->state = header.lifecycle;
+  inst->terminate_requested = header.terminate_requested != 0;
+  inst->values_dirty = true;
+  return fmi2OK;
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
+  instance* inst = enter(c, function::fmu_state, "fmi2FreeFMUstate");
+  if (inst == nullptr) return fmi2Error;
+  if (FMUstate == nullptr) return fail(*inst, "fmi2FreeFMUstate: null FMUstate pointer");
+  if (*FMUstate == nullptr) return fmi2OK;
+  saved_state* s = find_state(*inst, *FMUstate);
+  if (s == nullptr) return fail(*inst, "fmi2FreeFMUstate: unknown FMUstate");
+  inst->saved_states.erase(s);
+  delete s;
+  *FMUstate = nullptr;
+  return fmi2OK;
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
+  instance* inst = enter(c, function::fmu_state, "fmi2SerializedFMUstateSize");
+  if (inst == nullptr) return fmi2Error;
+  saved_state* s = find_state(*inst, FMUstate);
+  if (s == nullptr || size == nullptr) {
+    return fail(*inst, "fmi2SerializedFMUstateSize: unknown FMUstate or null size");
+  }
+  *size = s->bytes.size();
+  return fmi2OK;
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
+                                 fmi2Byte serializedState[], size_t size) {
+  instance* inst = enter(c, function::fmu_state, "fmi2SerializeFMUstate");
+  if (inst == nullptr) return fmi2Error;
+  saved_state* s = find_state(*inst, FMUstate);
+  if (s == nullptr || serializedState == nullptr) {
+    return fail(*inst, "fmi2SerializeFMUstate: unknown FMUstate or null buffer");
+  }
+  if (size != s->bytes.size()) {
+    return fail(*inst, "fmi2SerializeFMUstate: buffer of " + std::to_string(size) +
+                           " bytes, the state needs " + std::to_string(s->bytes.size()));
+  }
+  std::memcpy(serializedState, s->bytes.data(), size);
+  return fmi2OK;
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate* FMUstate) {
+  instance* inst = enter(c, function::fmu_state, "fmi2DeSerializeFMUstate");
+  if (inst == nullptr) return fmi2Error;
+  if (FMUstate == nullptr) return fail(*inst, "fmi2DeSerializeFMUstate: null FMUstate pointer");
+  const auto* bytes = reinterpret_cast<const std::byte*>(serializedState);
+  const std::string problem = state_problem(bytes, size);
+  if (!problem.empty()) return fail(*inst, "fmi2DeSerializeFMUstate: " + problem);
+  auto* s = new saved_state;
+  s->bytes.assign(bytes, bytes + size);
+  inst->saved_states.insert(s);
+  *FMUstate = s;
+  return fmi2OK;
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference[], size_t,
+                                        const fmi2ValueReference[], size_t, const fmi2Real[],
+                                        fmi2Real[]) {
+  return unsupported(c, function::get_directional_derivative, "fmi2GetDirectionalDerivative",
+                     "providesDirectionalDerivative is false");
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
+                                       const fmi2Integer[], const fmi2Real[]) {
+  return unsupported(c, function::set_real_input_derivatives, "fmi2SetRealInputDerivatives",
+                     "canInterpolateInputs is false");
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference[], size_t,
+                                        const fmi2Integer[], fmi2Real[]) {
+  return unsupported(c, function::get_real_output_derivatives, "fmi2GetRealOutputDerivatives",
+                     "maxOutputDerivativeOrder is 0");
+}
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
+                      fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+  (void)noSetFMUStatePriorToCurrentPoint;
+  instance* inst = enter(c, function::do_step, "fmi2DoStep");
+  if (inst == nullptr) return fmi2Error;
+  if (!std::isfinite(currentCommunicationPoint) || !(communicationStepSize > 0) ||
+      !std::isfinite(communicationStepSize)) {
+    return fail(*inst, "fmi2DoStep: invalid communication point or step size");
+  }
+  const time_ns t = to_time_ns(currentCommunicationPoint);
+  const time_ns h = to_time_ns(communicationStepSize);
+  step_result result;
+  try {
+    result = inst->component->do_step(t, h);
+  } catch (const std::exception& e) {
+    return component_failed(*inst, "fmi2DoStep", e);
+  }
+  inst->time = t + h;
+  inst->values_dirty = true;
+  if (result == step_result::terminate) {
+    inst->terminate_requested = true;
+    inst->state = step_failed;
+    inst->log.info("logEvents", "the component asks to end the simulation");
+    return fmi2Discard;
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c) {
+  return unsupported(c, function::cancel_step, "fmi2CancelStep", "steps are synchronous");
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status* value) {
+  (void)s;
+  instance* inst = enter(c, function::get_status, "fmi2GetStatus");
+  if (inst == nullptr || value == nullptr) return fmi2Error;
+  return fmi2Discard;  // no status kind of this type applies to synchronous steps
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
+  instance* inst = enter(c, function::get_status, "fmi2GetRealStatus");
+  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (s != fmi2LastSuccessfulTime) return fmi2Discard;
+  *value = to_seconds(inst->time);
+  return fmi2OK;
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer* value) {
+  (void)s;
+  instance* inst = enter(c, function::get_status, "fmi2GetIntegerStatus");
+  if (inst == nullptr || value == nullptr) return fmi2Error;
+  return fmi2Discard;
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
+  instance* inst = enter(c, function::get_status, "fmi2GetBooleanStatus");
+  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (s != fmi2Terminated) return fmi2Discard;
+  *value = inst->terminate_requested ? fmi2True : fmi2False;
+  return fmi2OK;
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String* value) {
+  (void)s;
+  instance* inst = enter(c, function::get_status, "fmi2GetStringStatus");
+  if (inst == nullptr || value == nullptr) return fmi2Error;
+  return fmi2Discard;
+}
+
+}  // extern "C"

@@ -1,0 +1,65 @@
+// One FMU instance as the glue sees it: the component model, its lifecycle state, time and the
+// FMI callbacks. Everything FMI-specific about an instance lives here and in glue.cpp.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lifecycle.hpp"
+#include "stride/fmi2/fmi2_api.h"
+#include "stride/sdk/fmu.hpp"
+
+namespace stride::sdk::glue {
+
+/// Logger that forwards to the importer's fmi2CallbackLogger.
+class fmi_logger final : public logger {
+ public:
+  fmi_logger(fmi2CallbackLogger callback, fmi2ComponentEnvironment environment,
+             std::string instance_name)
+      : callback_(callback), environment_(environment), instance_name_(std::move(instance_name)) {}
+
+  bool enabled(const char* category) const override;
+  void log(log_level level, const char* category, const std::string& message) override;
+
+  /// fmi2SetDebugLogging; returns the first unknown category name, or "" when all are known.
+  std::string set_debug_logging(bool on, const std::vector<std::string>& categories,
+                                const std::vector<std::string>& known);
+  bool calls_enabled() const { return calls_; }
+  void enable_all(bool on);
+
+ private:
+  fmi2CallbackLogger callback_;
+  fmi2ComponentEnvironment environment_;
+  std::string instance_name_;
+  bool all_ = false;
+  bool calls_ = false;
+  std::set<std::string> enabled_;
+};
+
+/// A saved FMU state: serialised bytes, so get/set and (de)serialisation share one format.
+struct saved_state {
+  std::vector<std::byte> bytes;
+};
+
+struct instance {
+  instance(const fmu_definition& definition, std::string name, std::string resource_dir,
+           const fmi2CallbackFunctions& callbacks);
+
+  const fmu_definition& fmu;
+  fmi_logger log;
+  instance_context context;
+  std::unique_ptr<model> component;
+  char* data = nullptr;  // base of the component's value storage
+  std::uint32_t state = instantiated;
+  time_ns time = 0;
+  bool terminate_requested = false;
+  bool values_dirty = true;
+  std::set<saved_state*> saved_states;  // every FMUstate handed out and not yet freed
+
+  void create_component();
+};
+
+}  // namespace stride::sdk::glue

@@ -1,0 +1,36 @@
+// Build-time generator: writes the modelDescription.xml of the component it is linked with.
+// Usage: <component>_model_description OUTPUT.xml
+// The generation time honours SOURCE_DATE_EPOCH for reproducible builds.
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <exception>
+#include <fstream>
+#include <iostream>
+
+#include "stride/sdk/model_description.hpp"
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: " << argv[0] << " OUTPUT.xml\n";
+    return 2;
+  }
+  try {
+    std::time_t now = std::time(nullptr);
+    if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = std::strtoll(epoch, nullptr, 10);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+    const std::string xml = stride::sdk::write_model_description(
+        stride::sdk::detail::registered_fmu(), stamp);
+    std::ofstream out(argv[1], std::ios::binary);
+    out << xml;
+    if (!out) {
+      std::cerr << argv[0] << ": cannot write " << argv[1] << '\n';
+      return 1;
+    }
+  } catch (const std::exception& e) {
+    std::cerr << argv[0] << ": " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
