@@ -6,6 +6,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lifecycle.hpp"
@@ -36,7 +37,7 @@ class fmi_logger final : public logger {
   std::string instance_name_;
   bool all_ = false;
   bool calls_ = false;
-  std::set<std::string> enabled_;
+  std::vector<std::string> enabled_;  // a handful of names: a vector beats a set here
 };
 
 /// A saved FMU state: serialised bytes, so get/set and (de)serialisation share one format.

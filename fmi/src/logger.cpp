@@ -19,7 +19,11 @@ std::string escape_percent(const std::string& message) {
 }  // namespace
 
 bool fmi_logger::enabled(const char* category) const {
-  return all_ || enabled_.count(category) != 0;
+  if (all_) return true;
+  for (const std::string& name : enabled_) {
+    if (name == category) return true;
+  }
+  return false;
 }
 
 void fmi_logger::log(log_level level, const char* category, const std::string& message) {
@@ -45,13 +49,12 @@ std::string fmi_logger::set_debug_logging(bool on, const std::vector<std::string
   for (const std::string& c : categories) {
     if (c == "logAll") {
       enable_all(on);
-    } else if (on) {
-      enabled_.insert(c);
     } else {
-      enabled_.erase(c);
+      std::erase(enabled_, c);
+      if (on) enabled_.push_back(c);
     }
   }
-  calls_ = all_ || enabled_.count("logCalls") != 0;
+  calls_ = enabled("logCalls");
   return {};
 }
 

@@ -1,6 +1,8 @@
 // stride_test: a gain with a counter, an integrator, vectors and strings, plus switches that make
 // it end the run or fail on request. It exists to test the SDK, the FMU tooling and importers.
+#include <cstring>
 #include <string>
+#include <string_view>
 
 #include "stride/sdk/fmu.hpp"
 
@@ -17,7 +19,8 @@ struct test_data {
   bool enable = true;
   bool active = true;
   sdk::fixed_string<63> label{"stride"};
-  sdk::fixed_string<63> echo{};
+  sdk::fixed_string<63> suffix{};
+  sdk::fixed_string<127> echo{};
   int stop_after_steps = 0;
   int fail_at_step = 0;
   double vec_in[3] = {0.0, 0.0, 0.0};
@@ -49,7 +52,8 @@ class test_model : public sdk::model_base<test_data> {
     t.add("enable", &test_data::enable).input().describe("Boolean input");
     t.add("active", &test_data::active).output().depends_on({"enable"}).describe("Equals enable (feedthrough)");
     t.add("label", &test_data::label).parameter().describe("Free text copied to echo");
-    t.add("echo", &test_data::echo).output().describe("Equals label");
+    t.add("suffix", &test_data::suffix).input().describe("Free text appended to echo");
+    t.add("echo", &test_data::echo).output().depends_on({"suffix"}).describe("label + suffix");
     t.add("stop_after_steps", &test_data::stop_after_steps).parameter().min(0)
         .describe("End the run after this many steps (0: never)");
     t.add("fail_at_step", &test_data::fail_at_step).parameter().min(0)
@@ -62,7 +66,11 @@ class test_model : public sdk::model_base<test_data> {
   void calculate_values() override {
     data_.y = data_.gain * data_.u + data_.offset;
     data_.active = data_.enable;
-    data_.echo = data_.label;
+    // label and suffix together always fit into echo (63 + 63 ≤ 127)
+    const std::string_view label = data_.label.view(), suffix = data_.suffix.view();
+    std::memcpy(data_.echo.text, label.data(), label.size());
+    std::memcpy(data_.echo.text + label.size(), suffix.data(), suffix.size());
+    data_.echo.text[label.size() + suffix.size()] = '\0';
   }
 
   sdk::step_result do_step(sdk::time_ns, sdk::time_ns h) override {
@@ -73,7 +81,9 @@ class test_model : public sdk::model_base<test_data> {
     data_.integral += data_.u * sdk::to_seconds(h);
     data_.counter += 1 + data_.n;
     for (int i = 0; i < 3; ++i) data_.vec_out[i] = 2.0 * data_.vec_in[i];
-    context_.log->info("logEvents", "step " + std::to_string(data_.counter));
+    if (context_.log->enabled("logEvents")) {
+      context_.log->info("logEvents", "step " + std::to_string(data_.counter));
+    }
     if (data_.stop_after_steps > 0 && data_.counter >= data_.stop_after_steps) {
       return sdk::step_result::terminate;
     }

@@ -151,7 +151,7 @@ bool is_c_identifier(std::string_view s) {
   return true;
 }
 
-std::string quoted(std::string_view s) {
+std::string quote(std::string_view s) {
   std::string out = "\"";
   out += s;
   out += '"';

@@ -35,7 +35,7 @@ bool is_xs_date_time(std::string_view s);
 bool is_c_identifier(std::string_view s);
 
 /// Quotes a value for a message: "name".
-std::string quoted(std::string_view s);
+std::string quote(std::string_view s);
 
 }  // namespace stride::fmi_check::detail
 
