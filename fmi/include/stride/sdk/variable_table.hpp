@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -159,6 +160,20 @@ class table_builder : public table_builder_base {
   variable_group add(std::string name, T (Data::*member)[N]) {
     return table_builder_base::add(std::move(name), detail::storage_traits<T>::type,
                                    offset_of(member), N, sizeof(T), string_capacity<T>(), true);
+  }
+
+  /// A field reached through nested members, given as a reference into defaults():
+  /// `t.add_field("x_offset", t.defaults().params.x_offset)`.
+  template <class T>
+  variable_group add_field(std::string name, const T& field_in_defaults) {
+    const char* base = reinterpret_cast<const char*>(defaults_.get());
+    const char* field = reinterpret_cast<const char*>(&field_in_defaults);
+    if (field < base || field + sizeof(T) > base + sizeof(Data)) {
+      throw std::logic_error("variable '" + name + "': field is not inside the data struct");
+    }
+    return table_builder_base::add(std::move(name), detail::storage_traits<T>::type,
+                                   static_cast<std::size_t>(field - base), 1, sizeof(T),
+                                   string_capacity<T>(), false);
   }
 
   variable_table finish() { return table_builder_base::finish(defaults_, sizeof(Data)); }
