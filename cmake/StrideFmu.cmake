@@ -7,8 +7,9 @@
 #    that writes modelDescription.xml at build time from the component's variable table;
 #  - the shared library `binaries/linux64/<id>.so` exports only the fmi2* symbols (version
 #    script), carries libstdc++/libgcc statically and has RPATH=$ORIGIN;
-#  - with BUNDLE_DEPENDENCIES, every shared library it still needs beyond the C runtime is copied
-#    next to it, so the FMU runs on a machine without our Debian packages;
+#  - with BUNDLE_DEPENDENCIES, every shared library it needs beyond the C runtime (libstdc++
+#    included, which then is not linked statically) is copied next to it with RPATH=$ORIGIN, so
+#    the FMU runs on a machine without our Debian packages;
 #  - RESOURCES land in `resources/`.
 # Targets: <NAME>_fmu (the .so), <NAME>_fmu_model (objects), <NAME>_model_description
 # (generator), <NAME>_fmu_package (the archive). NAME is appended to the global property
@@ -38,8 +39,12 @@ function(stride_add_fmu name)
     LIBRARY_OUTPUT_DIRECTORY "${staging}/binaries/linux64"
     BUILD_RPATH "$ORIGIN"
     LINK_DEPENDS "${STRIDE_CMAKE_DIR}/fmu_exports.map")
+  # the C++ runtime goes in statically, unless shared libraries are bundled anyway: then the
+  # bundled libstdc++ serves all of them, so memory never crosses two runtimes
+  if(NOT arg_BUNDLE_DEPENDENCIES)
+    target_link_options(${name}_fmu PRIVATE -static-libstdc++ -static-libgcc)
+  endif()
   target_link_options(${name}_fmu PRIVATE
-    -static-libstdc++ -static-libgcc
     -Wl,--exclude-libs,ALL
     -Wl,--version-script=${STRIDE_CMAKE_DIR}/fmu_exports.map
     -Wl,--no-undefined

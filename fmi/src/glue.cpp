@@ -251,6 +251,13 @@ void instance::create_component() {
 
 }  // namespace stride::sdk::glue
 
+// libstdc++ is linked statically into every FMU; its emergency exception pool would be lost on
+// each dlclose. Releasing it when the library unloads keeps importers leak-free under valgrind.
+namespace __gnu_cxx {
+void __freeres() noexcept;
+}
+__attribute__((destructor)) static void release_static_libstdcxx() { __gnu_cxx::__freeres(); }
+
 using namespace stride::sdk;
 using namespace stride::sdk::glue;
 

@@ -70,8 +70,9 @@ void check_raw_format(const std::filesystem::path& fmu, detail::reporter& out) {
     return;
   }
   if (cd_offset == 0xFFFFFFFFu || cd_size == 0xFFFFFFFFu || entries == 0xFFFFu) {
-    out.error("archive.format", "the archive uses ZIP64 (version 4.5 needed to extract; FMI "
-                                "allows at most 2.0)");
+    out.error("archive.format",
+              "the archive uses ZIP64 (version 4.5 needed to extract; FMI "
+              "allows at most 2.0)");
     return;
   }
   if (static_cast<std::uint64_t>(cd_offset) + cd_size > size) return;
@@ -92,12 +93,30 @@ void check_raw_format(const std::filesystem::path& fmu, detail::reporter& out) {
     // the low byte is the spec version times ten; the high byte names the host system
     const unsigned version = needed & 0xFFu;
     if (version > 20) {
-      out.error("archive.format", "entry " + quote(name) + " needs ZIP version " +
-                                      std::to_string(version / 10) + "." +
-                                      std::to_string(version % 10) +
-                                      " to extract; FMI allows at most 2.0");
+      out.error("archive.format",
+                "entry " + quote(name) + " needs ZIP version " + std::to_string(version / 10) +
+                    "." + std::to_string(version % 10) + " to extract; FMI allows at most 2.0");
     }
     pos += 46 + name_length + extra_length + comment_length;
+  }
+}
+
+/// Decompresses an entry completely, so libzip verifies its CRC. ZIP_CHECKCONS is not used on
+/// open: it rejects archives written by libarchive (`cmake -E tar --format=zip`), whose local
+/// headers carry sizes next to a data descriptor, which every unzip tool accepts.
+void check_entry_data(zip_t* archive, zip_uint64_t index, const std::string& entry,
+                      detail::reporter& out) {
+  std::unique_ptr<zip_file_t, zip_file_closer> file(zip_fopen_index(archive, index, 0));
+  if (!file) {
+    out.error("archive.open", entry + " cannot be opened: " + zip_strerror(archive));
+    return;
+  }
+  std::array<char, 65536> buffer{};
+  zip_int64_t n = 0;
+  while ((n = zip_fread(file.get(), buffer.data(), buffer.size())) > 0) {
+  }
+  if (n < 0) {
+    out.error("archive.open", entry + " cannot be decompressed: " + zip_file_strerror(file.get()));
   }
 }
 
@@ -125,13 +144,12 @@ bool is_absolute_name(const std::string& name) {
 std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
   detail::reporter out;
   int error_code = 0;
-  std::unique_ptr<zip_t, zip_closer> archive(
-      zip_open(fmu.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &error_code));
+  std::unique_ptr<zip_t, zip_closer> archive(zip_open(fmu.c_str(), ZIP_RDONLY, &error_code));
   if (!archive) {
     zip_error_t error;
     zip_error_init_with_code(&error, error_code);
-    out.error("archive.open", "cannot open " + fmu.string() + " as a ZIP archive: " +
-                                  zip_error_strerror(&error));
+    out.error("archive.open",
+              "cannot open " + fmu.string() + " as a ZIP archive: " + zip_error_strerror(&error));
     zip_error_fini(&error);
     return out.take();
   }
@@ -170,6 +188,10 @@ std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
       if ((st.valid & ZIP_STAT_ENCRYPTION_METHOD) != 0 && st.encryption_method != ZIP_EM_NONE) {
         out.error("archive.encryption", entry + " is encrypted");
       }
+    }
+    if (!name.ends_with("/") && (st.valid & ZIP_STAT_ENCRYPTION_METHOD) != 0 &&
+        st.encryption_method == ZIP_EM_NONE) {
+      check_entry_data(archive.get(), index, entry, out);
     }
     zip_uint8_t opsys = 0;
     zip_uint32_t attributes = 0;
@@ -222,15 +244,15 @@ std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
   std::unique_ptr<zip_file_t, zip_file_closer> file(
       zip_fopen_index(archive.get(), *model_description_index, 0));
   if (!file) {
-    out.error("archive.model_description", std::string("cannot read modelDescription.xml: ") +
-                                               zip_strerror(archive.get()));
+    out.error("archive.model_description",
+              std::string("cannot read modelDescription.xml: ") + zip_strerror(archive.get()));
     return out.take();
   }
   std::string xml(static_cast<std::size_t>(st.size), '\0');
   const zip_int64_t read = zip_fread(file.get(), xml.data(), st.size);
   if (read < 0 || static_cast<zip_uint64_t>(read) != st.size) {
-    out.error("archive.model_description", std::string("cannot read modelDescription.xml: ") +
-                                               zip_file_strerror(file.get()));
+    out.error("archive.model_description",
+              std::string("cannot read modelDescription.xml: ") + zip_file_strerror(file.get()));
     return out.take();
   }
   out.append(check_model_description(xml, &listing));

@@ -56,32 +56,46 @@ std::optional<initial_kind> parse_initial(std::string_view s) {
 
 std::string_view name_of(causality c) {
   switch (c) {
-    case causality::parameter: return "parameter";
-    case causality::calculated_parameter: return "calculatedParameter";
-    case causality::input: return "input";
-    case causality::output: return "output";
-    case causality::local: return "local";
-    case causality::independent: return "independent";
+    case causality::parameter:
+      return "parameter";
+    case causality::calculated_parameter:
+      return "calculatedParameter";
+    case causality::input:
+      return "input";
+    case causality::output:
+      return "output";
+    case causality::local:
+      return "local";
+    case causality::independent:
+      return "independent";
   }
   return "?";
 }
 
 std::string_view name_of(variability v) {
   switch (v) {
-    case variability::constant: return "constant";
-    case variability::fixed: return "fixed";
-    case variability::tunable: return "tunable";
-    case variability::discrete: return "discrete";
-    case variability::continuous: return "continuous";
+    case variability::constant:
+      return "constant";
+    case variability::fixed:
+      return "fixed";
+    case variability::tunable:
+      return "tunable";
+    case variability::discrete:
+      return "discrete";
+    case variability::continuous:
+      return "continuous";
   }
   return "?";
 }
 
 std::string_view name_of(initial_kind i) {
   switch (i) {
-    case initial_kind::exact: return "exact";
-    case initial_kind::approx: return "approx";
-    case initial_kind::calculated: return "calculated";
+    case initial_kind::exact:
+      return "exact";
+    case initial_kind::approx:
+      return "approx";
+    case initial_kind::calculated:
+      return "calculated";
   }
   return "?";
 }
@@ -91,10 +105,14 @@ bool combination_allowed(causality c, variability v) {
     case causality::parameter:
     case causality::calculated_parameter:
       return v == variability::fixed || v == variability::tunable;
-    case causality::input: return v == variability::discrete || v == variability::continuous;
-    case causality::output: return v != variability::fixed && v != variability::tunable;
-    case causality::local: return true;
-    case causality::independent: return v == variability::continuous;
+    case causality::input:
+      return v == variability::discrete || v == variability::continuous;
+    case causality::output:
+      return v != variability::fixed && v != variability::tunable;
+    case causality::local:
+      return true;
+    case causality::independent:
+      return v == variability::continuous;
   }
   return false;
 }
@@ -177,8 +195,7 @@ class model_description_checker {
   void check_model_structure(const XMLElement* ms);
   std::vector<std::size_t> check_unknowns(const XMLElement& list, std::string_view rule_prefix,
                                           bool initial_unknowns);
-  void check_dependencies(const XMLElement& unknown, std::string_view where,
-                          bool initial_unknowns);
+  void check_dependencies(const XMLElement& unknown, std::string_view where, bool initial_unknowns);
   void check_archive();
 
   static std::string at(const XMLElement& e) { return "line " + std::to_string(e.GetLineNum()); }
@@ -204,12 +221,13 @@ void model_description_checker::check_attributes(const XMLElement& e,
   for (const XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
     const std::string_view name = a->Name();
     if (allowed.contains(name) || name.starts_with("xmlns") || name.starts_with("xsi:")) continue;
-    std::string message = at(e) + ": <" + e.Name() + "> has no attribute " + quote(name) +
-                          " in FMI 2.0";
+    std::string message =
+        at(e) + ": <" + e.Name() + "> has no attribute " + quote(name) + " in FMI 2.0";
     if (name == "canGetAndSetFMUState" || name == "canSerializeFMUState" ||
         name == "providesDirectionalDerivatives") {
-      message += " (FMI 3.0 spelling; FMI 2.0 writes canGetAndSetFMUstate, canSerializeFMUstate, "
-                 "providesDirectionalDerivative)";
+      message +=
+          " (FMI 3.0 spelling; FMI 2.0 writes canGetAndSetFMUstate, canSerializeFMUstate, "
+          "providesDirectionalDerivative)";
     }
     out_.error("schema.attribute", std::move(message));
   }
@@ -301,8 +319,7 @@ void model_description_checker::check_child_order(
     const std::ptrdiff_t rank = it - order.begin();
     if (rank == last) {
       out_.error("structure.child_order", at(*c) + ": <" + std::string(name) +
-                                              "> occurs more than once in <" + parent.Name() +
-                                              ">");
+                                              "> occurs more than once in <" + parent.Name() + ">");
     } else if (rank < last) {
       out_.error("structure.child_order", at(*c) + ": <" + std::string(name) +
                                               "> must come before <" + std::string(last_name) +
@@ -427,14 +444,12 @@ void model_description_checker::check_default_experiment(const XMLElement* de) {
                    " is not after startTime " + std::to_string(start.value_or(0.0)));
   }
   if (step && *step <= 0.0) {
-    out_.error("default_experiment.step_size",
-               at(*de) + ": DefaultExperiment stepSize " + std::to_string(*step) +
-                   " is not positive");
+    out_.error("default_experiment.step_size", at(*de) + ": DefaultExperiment stepSize " +
+                                                   std::to_string(*step) + " is not positive");
   }
   if (tolerance && *tolerance <= 0.0) {
-    out_.error("default_experiment.tolerance",
-               at(*de) + ": DefaultExperiment tolerance " + std::to_string(*tolerance) +
-                   " is not positive");
+    out_.error("default_experiment.tolerance", at(*de) + ": DefaultExperiment tolerance " +
+                                                   std::to_string(*tolerance) + " is not positive");
   }
 }
 
@@ -486,8 +501,8 @@ void model_description_checker::check_variable(variable& v, const XMLElement& sv
   check_attributes(sv, {"name", "valueReference", "description", "causality", "variability",
                         "initial", "canHandleMultipleSetPerTimeInstant"});
   if (const char* name = sv.Attribute("name"); name == nullptr || std::string_view(name).empty()) {
-    out_.error("variable.name", at(sv) + ": <ScalarVariable> (index " + std::to_string(v.index) +
-                                    ") has no name");
+    out_.error("variable.name",
+               at(sv) + ": <ScalarVariable> (index " + std::to_string(v.index) + ") has no name");
   } else {
     v.name = name;
   }
@@ -533,9 +548,8 @@ void model_description_checker::check_variable(variable& v, const XMLElement& sv
     if (declared != nullptr) {
       const auto it = simple_types_.find(std::string_view(declared));
       if (it == simple_types_.end()) {
-        out_.error("variable.declared_type",
-                   describe(v) + ": declaredType " + quote(declared) +
-                       " is not defined in <TypeDefinitions>");
+        out_.error("variable.declared_type", describe(v) + ": declaredType " + quote(declared) +
+                                                 " is not defined in <TypeDefinitions>");
       } else if (it->second.type != v.type) {
         out_.error("variable.declared_type", describe(v) + ": declaredType " + quote(declared) +
                                                  " is a " + it->second.type + ", the variable a " +
@@ -553,8 +567,8 @@ void model_description_checker::check_variable(variable& v, const XMLElement& sv
                                          " is not one of parameter, calculatedParameter, input, "
                                          "output, local, independent");
   }
-  v.var = variability_text != nullptr ? parse_variability(variability_text)
-                                      : variability::continuous;
+  v.var =
+      variability_text != nullptr ? parse_variability(variability_text) : variability::continuous;
   if (!v.var) {
     out_.error("variable.variability", describe(v) + ": variability " + quote(variability_text) +
                                            " is not one of constant, fixed, tunable, discrete, "
@@ -651,8 +665,8 @@ void model_description_checker::check_values(const variable& v) {
     return text;
   };
   auto bad_value = [&](const char* name, const char* text, std::string_view expected) {
-    out_.error("variable.value", describe(v) + ": " + name + "=" + quote(text) + " is not " +
-                                     std::string(expected));
+    out_.error("variable.value",
+               describe(v) + ": " + name + "=" + quote(text) + " is not " + std::string(expected));
   };
 
   if (v.type == "Real") {
@@ -685,8 +699,8 @@ void model_description_checker::check_values(const variable& v) {
       if (std::isnan(s)) {
         out_.error("variable.value", describe(v) + ": start is NaN");
       } else if ((has_min && s < values["min"]) || (has_max && s > values["max"])) {
-        out_.error("variable.range", describe(v) + ": start " + std::to_string(s) +
-                                         " is outside [min, max]");
+        out_.error("variable.range",
+                   describe(v) + ": start " + std::to_string(s) + " is outside [min, max]");
       }
     }
   } else if (v.type == "Integer" || v.type == "Enumeration") {
@@ -760,9 +774,8 @@ void model_description_checker::check_derivative_attributes() {
                                             " is not an index in 1.." +
                                             std::to_string(vars_.size()));
     } else if (vars_[*d - 1].type != "Real") {
-      out_.error("variable.derivative", describe(v) + ": derivative=" + quote(text) +
-                                            " names " + quote(vars_[*d - 1].name) +
-                                            ", which is not a Real");
+      out_.error("variable.derivative", describe(v) + ": derivative=" + quote(text) + " names " +
+                                            quote(vars_[*d - 1].name) + ", which is not a Real");
     } else {
       v.derivative_of = *d;
     }
@@ -833,8 +846,9 @@ void model_description_checker::check_model_structure(const XMLElement* ms) {
   const std::set<std::size_t> listed_outputs(outputs.begin(), outputs.end());
   for (const variable& v : vars_) {
     if (v.caus == causality::output && !listed_outputs.contains(v.index)) {
-      out_.error("outputs.missing", describe(v) + ": an output missing from "
-                                                  "<ModelStructure><Outputs>");
+      out_.error("outputs.missing", describe(v) +
+                                        ": an output missing from "
+                                        "<ModelStructure><Outputs>");
     }
   }
 
@@ -847,8 +861,9 @@ void model_description_checker::check_model_structure(const XMLElement* ms) {
       const variable& v = vars_[index - 1];
       if (!v.derivative_of) {
         out_.error("derivatives.index",
-                   describe(v) + ": listed in <Derivatives> but is not a Real with a derivative "
-                                 "attribute (list the derivative, not the state)");
+                   describe(v) +
+                       ": listed in <Derivatives> but is not a Real with a derivative "
+                       "attribute (list the derivative, not the state)");
       }
     }
   }
@@ -886,9 +901,10 @@ void model_description_checker::check_model_structure(const XMLElement* ms) {
       previous = std::max(previous, index);
       if (!required.contains(index)) {
         out_.error("initial_unknowns.extra",
-                   describe(v) + ": listed in <InitialUnknowns> but is not an output with "
-                                 "initial approx|calculated, a calculatedParameter, or a "
-                                 "state/derivative with initial approx|calculated");
+                   describe(v) +
+                       ": listed in <InitialUnknowns> but is not an output with "
+                       "initial approx|calculated, a calculatedParameter, or a "
+                       "state/derivative with initial approx|calculated");
       }
     }
   }
@@ -899,8 +915,7 @@ void model_description_checker::check_model_structure(const XMLElement* ms) {
       out_.error("initial_unknowns.missing",
                  describe(v) + ": must be listed in <ModelStructure><InitialUnknowns> (" +
                      (v.caus ? std::string(name_of(*v.caus)) : std::string("?")) +
-                     " with initial " + (v.initial ? std::string(name_of(*v.initial)) : "?") +
-                     ")");
+                     " with initial " + (v.initial ? std::string(name_of(*v.initial)) : "?") + ")");
     }
   }
 }
@@ -912,8 +927,8 @@ std::vector<std::size_t> model_description_checker::check_unknowns(const XMLElem
   std::vector<std::size_t> indices;
   for (const XMLElement* u = list.FirstChildElement(); u != nullptr; u = u->NextSiblingElement()) {
     if (std::string_view(u->Name()) != "Unknown") {
-      out_.error("structure.child_order", at(*u) + ": unexpected element <" + u->Name() +
-                                              "> in <" + list.Name() + ">");
+      out_.error("structure.child_order",
+                 at(*u) + ": unexpected element <" + u->Name() + "> in <" + list.Name() + ">");
       continue;
     }
     check_attributes(*u, {"index", "dependencies", "dependenciesKind"});
@@ -929,8 +944,9 @@ std::vector<std::size_t> model_description_checker::check_unknowns(const XMLElem
       continue;
     }
     if (*index == 0) {
-      out_.error(index_rule, where + " index 0 is invalid: indices are 1-based positions in "
-                                     "<ModelVariables>");
+      out_.error(index_rule, where +
+                                 " index 0 is invalid: indices are 1-based positions in "
+                                 "<ModelVariables>");
       continue;
     }
     if (*index > vars_.size()) {
@@ -953,8 +969,7 @@ std::vector<std::size_t> model_description_checker::check_unknowns(const XMLElem
 }
 
 void model_description_checker::check_dependencies(const XMLElement& unknown,
-                                                   std::string_view where,
-                                                   bool initial_unknowns) {
+                                                   std::string_view where, bool initial_unknowns) {
   const char* deps_text = unknown.Attribute("dependencies");
   const char* kinds_text = unknown.Attribute("dependenciesKind");
   const std::string prefix(where);
@@ -972,9 +987,8 @@ void model_description_checker::check_dependencies(const XMLElement& unknown,
         continue;
       }
       if (*d <= previous) {
-        out_.error("dependencies.order",
-                   prefix + " dependencies " + quote(deps_text) +
-                       " are not sorted ascending without duplicates");
+        out_.error("dependencies.order", prefix + " dependencies " + quote(deps_text) +
+                                             " are not sorted ascending without duplicates");
         break;
       }
       previous = *d;
@@ -1009,8 +1023,11 @@ void model_description_checker::check_archive() {
   if (archive_ == nullptr) return;
   // FMI 3 platform tuples for platforms that have an FMI 2 name are not searched by FMI 2 tools
   static const std::map<std::string_view, std::string_view> k_fmi3_tuples = {
-      {"x86_64-linux", "linux64"},  {"x86-linux", "linux32"},   {"x86_64-windows", "win64"},
-      {"x86-windows", "win32"},     {"x86_64-darwin", "darwin64"}};
+      {"x86_64-linux", "linux64"},
+      {"x86-linux", "linux32"},
+      {"x86_64-windows", "win64"},
+      {"x86-windows", "win32"},
+      {"x86_64-darwin", "darwin64"}};
   std::set<std::string, std::less<>> reported;
   for (const std::string& entry : *archive_) {
     if (!entry.starts_with("binaries/")) continue;
@@ -1020,9 +1037,10 @@ void model_description_checker::check_archive() {
     const std::string_view dir = rest.substr(0, slash);
     const auto it = k_fmi3_tuples.find(dir);
     if (it != k_fmi3_tuples.end() && reported.emplace(dir).second) {
-      out_.error("archive.platform_dir",
-                 "binaries/" + std::string(dir) + "/ is an FMI 3 platform tuple; FMI 2 importers "
-                 "only look in binaries/" + std::string(it->second) + "/");
+      out_.error("archive.platform_dir", "binaries/" + std::string(dir) +
+                                             "/ is an FMI 3 platform tuple; FMI 2 importers "
+                                             "only look in binaries/" +
+                                             std::string(it->second) + "/");
     }
   }
   if (model_identifier_.empty()) return;
@@ -1042,8 +1060,7 @@ void model_description_checker::check_archive() {
 
 }  // namespace
 
-std::vector<finding> check_model_description(std::string_view xml,
-                                             const archive_listing* archive) {
+std::vector<finding> check_model_description(std::string_view xml, const archive_listing* archive) {
   detail::reporter out;
   model_description_checker checker(out, archive);
   checker.run(xml);

@@ -11,7 +11,8 @@ namespace {
 
 constexpr std::array k_rules{
     // §2.1 archive
-    rule_description{"archive.open", "the file is a readable ZIP archive"},
+    rule_description{"archive.open",
+                     "the file is a readable ZIP archive; every entry decompresses, CRC ok"},
     rule_description{"archive.extension", "the file name ends in .fmu (warning)"},
     rule_description{"archive.format",
                      "no ZIP64, split or spanned archive; version needed to extract <= 2.0"},
@@ -42,8 +43,9 @@ constexpr std::array k_rules{
     rule_description{"structure.model_structure", "the ModelStructure element is present"},
     rule_description{"cosim.missing", "a CoSimulation element is present"},
     rule_description{"cosim.model_identifier", "CoSimulation@modelIdentifier is a C identifier"},
-    rule_description{"cosim.flag", "capability flags are xs:boolean, maxOutputDerivativeOrder "
-                                   "unsigned"},
+    rule_description{"cosim.flag",
+                     "capability flags are xs:boolean, maxOutputDerivativeOrder "
+                     "unsigned"},
     rule_description{"type_definitions.name", "SimpleType names are given and unique"},
     rule_description{"log_categories.name", "every Category has a name"},
     rule_description{"log_categories.unique", "Category names are unique"},
@@ -73,8 +75,7 @@ constexpr std::array k_rules{
     rule_description{"variable.value", "start/min/max/nominal parse as the variable's type"},
     rule_description{"variable.continuous_non_real", "only Real variables are continuous"},
     rule_description{"variable.range", "min <= max and min <= start <= max"},
-    rule_description{"variable.independent",
-                     "at most one independent variable, and it is a Real"},
+    rule_description{"variable.independent", "at most one independent variable, and it is a Real"},
     rule_description{"variable.derivative",
                      "Real@derivative is the 1-based index of a Real variable"},
     rule_description{"variable.alias_start",
@@ -90,10 +91,8 @@ constexpr std::array k_rules{
     rule_description{"derivatives.index",
                      "Derivatives/Unknown@index is in range and names a Real with derivative"},
     rule_description{"dependencies.index", "dependencies are 1-based indices in range"},
-    rule_description{"dependencies.order",
-                     "dependencies are sorted ascending without duplicates"},
-    rule_description{"dependencies.kind",
-                     "dependenciesKind has one legal kind per dependency"},
+    rule_description{"dependencies.order", "dependencies are sorted ascending without duplicates"},
+    rule_description{"dependencies.kind", "dependenciesKind has one legal kind per dependency"},
     rule_description{"initial_unknowns.index",
                      "InitialUnknowns/Unknown@index is a 1-based index in range"},
     rule_description{"initial_unknowns.missing",
@@ -108,7 +107,9 @@ constexpr std::array k_rules{
 
 }  // namespace
 
-std::span<const rule_description> all_rules() { return k_rules; }
+std::span<const rule_description> all_rules() {
+  return k_rules;
+}
 
 std::string_view to_string(finding::severity level) {
   return level == finding::severity::error ? "error" : "warning";

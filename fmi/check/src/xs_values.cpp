@@ -9,7 +9,9 @@ namespace stride::fmi_check::detail {
 
 namespace {
 
-bool is_ws(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+bool is_ws(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
 
 bool all_digits(std::string_view s) {
   if (s.empty()) return false;
@@ -25,7 +27,9 @@ int to_int(std::string_view digits) {
   return v;
 }
 
-bool is_leap(long year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
+bool is_leap(long year) {
+  return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+}
 
 }  // namespace
 

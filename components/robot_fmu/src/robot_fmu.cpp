@@ -1,0 +1,290 @@
+// robot.fmu: the DARwIn-OP plant (ODE, URDF) as an FMI 2.0 co-simulation component.
+//
+// Inputs   joint_target[1..20] (rad, by servo ID), reset (a change re-stands the robot at the
+//          origin), push_x, push_y (N, on the torso)
+// Params   urdf, physics and contact settings, servo model, fall thresholds (all fixed)
+// Outputs  joint_angle[1..20], gyro_fb, gyro_rl (board counts − 512, for gait.fmu), gyro[1..3],
+//          acc[1..3], base_x/y/z, roll/pitch/yaw, com_x/y/z, foot forces, fallen
+// Step     any h: the plant runs every whole physics step that fits and carries the remainder.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "stride/robot/darwin.hpp"
+#include "stride/robot/robot_sim.hpp"
+#include "stride/sdk/fmu.hpp"
+
+namespace stride::robot {
+namespace {
+
+constexpr int k_servos = darwin::k_servo_count;
+
+struct robot_data {
+  // inputs
+  double joint_target[k_servos];
+  int reset = 0;
+  double push_x = 0.0;
+  double push_y = 0.0;
+  // parameters
+  sdk::text urdf{};
+  double physics_step;
+  int solver;
+  double erp, cfm;
+  double friction, bounce, contact_soft_erp, contact_soft_cfm;
+  double servo_p_gain, servo_max_velocity, servo_max_acceleration, servo_torque_limit;
+  double servo_damping, servo_static_friction, servo_compliance;
+  bool weld_arms_and_head = true;
+  double fall_tilt, fall_height;
+  // outputs
+  double joint_angle[k_servos] = {};
+  int gyro_fb = 0;
+  int gyro_rl = 0;
+  double gyro[3] = {};
+  double acc[3] = {};
+  double base_x = 0, base_y = 0, base_z = 0;
+  double roll = 0, pitch = 0, yaw = 0;
+  double com_x = 0, com_y = 0, com_z = 0;
+  double left_foot_force = 0, right_foot_force = 0;
+  double max_penetration = 0;
+  bool fallen = false;
+  // internal
+  int applied_reset = 0;
+
+  // start values: the DARwIn-OP profile of the plant core, standing in the walk-ready pose
+  robot_data() {
+    const robot_config c = darwin::default_config("");
+    const auto pose = darwin::walk_ready_pose();
+    for (int i = 0; i < k_servos; ++i) joint_target[i] = pose[static_cast<std::size_t>(i)];
+    physics_step = c.physics_step;
+    solver = c.solver == physics_solver::world_step ? 0 : 1;
+    erp = c.erp;
+    cfm = c.cfm;
+    friction = c.contact.mu;
+    bounce = c.contact.bounce;
+    contact_soft_erp = c.contact.soft_erp;
+    contact_soft_cfm = c.contact.soft_cfm;
+    servo_p_gain = c.servo.p_gain;
+    servo_max_velocity = c.servo.max_velocity;
+    servo_max_acceleration = c.servo.max_acceleration;
+    servo_torque_limit = c.servo.torque_limit;
+    servo_damping = c.servo.damping;
+    servo_static_friction = c.servo.static_friction;
+    servo_compliance = c.servo.compliance;
+    fall_tilt = c.fall_tilt;
+    fall_height = c.fall_height;
+  }
+};
+
+// the board reports integer counts; Webots truncates the raw value (512 + x) towards zero
+int board_counts(double counts_minus_centre) {
+  return static_cast<int>(std::floor(counts_minus_centre));
+}
+
+class robot_model_fmu : public sdk::model_base<robot_data> {
+ public:
+  explicit robot_model_fmu(const sdk::instance_context& context) : context_(context) {}
+
+  static sdk::model_info info() {
+    sdk::model_info i;
+    i.model_name = "robot";
+    i.model_identifier = "robot";
+    i.description = "DARwIn-OP humanoid on ODE, loaded from URDF, with Webots-like servos";
+    i.default_step_size = 0.008;
+    return i;
+  }
+
+  static sdk::variable_table variables() {
+    sdk::table_builder<robot_data> t;
+    t.add("joint_target", &robot_data::joint_target).input().unit("rad")
+        .describe("Servo target by servo ID, URDF joint convention");
+    t.add("reset", &robot_data::reset).input()
+        .describe("Any change puts the robot back standing in the walk-ready pose at the origin");
+    t.add("push_x", &robot_data::push_x).input().unit("N").describe("Push on the torso, world x");
+    t.add("push_y", &robot_data::push_y).input().unit("N").describe("Push on the torso, world y");
+
+    t.add("urdf", &robot_data::urdf).parameter()
+        .describe("URDF to load: a path, or a file in resources/ (empty: darwin-op.urdf)");
+    t.add("physics_step", &robot_data::physics_step).parameter().unit("s").range(1e-4, 0.05)
+        .describe("Internal physics step; each doStep runs the whole steps that fit");
+    t.add("solver", &robot_data::solver).parameter().range(0, 1)
+        .describe("0 = dWorldStep (deterministic), 1 = dWorldQuickStep (faster, not reproducible)");
+    t.add("erp", &robot_data::erp).parameter().range(0, 1).describe("World error reduction");
+    t.add("cfm", &robot_data::cfm).parameter().range(0, 1).describe("World constraint force mixing");
+    t.add("friction", &robot_data::friction).parameter().range(0, 1e3)
+        .describe("Coulomb friction coefficient of contacts");
+    t.add("bounce", &robot_data::bounce).parameter().range(0, 1).describe("Contact restitution");
+    t.add("contact_soft_erp", &robot_data::contact_soft_erp).parameter().range(0, 1)
+        .describe("Contact softness: error reduction");
+    t.add("contact_soft_cfm", &robot_data::contact_soft_cfm).parameter().range(0, 1)
+        .describe("Contact softness: constraint force mixing");
+    t.add("servo_p_gain", &robot_data::servo_p_gain).parameter().unit("1/s").range(0, 1e4)
+        .describe("Velocity target = gain * position error");
+    t.add("servo_max_velocity", &robot_data::servo_max_velocity).parameter().unit("rad/s")
+        .range(0, 1e3).describe("Servo speed limit");
+    t.add("servo_max_acceleration", &robot_data::servo_max_acceleration).parameter()
+        .unit("rad/s2").range(0, 1e6).describe("Servo acceleration limit (0: none)");
+    t.add("servo_torque_limit", &robot_data::servo_torque_limit).parameter().unit("N.m")
+        .range(0, 1e3).describe("Servo torque limit");
+    t.add("servo_damping", &robot_data::servo_damping).parameter().unit("N.m.s/rad")
+        .range(0, 1e3).describe("Joint viscous damping");
+    t.add("servo_static_friction", &robot_data::servo_static_friction).parameter().unit("N.m")
+        .range(0, 1e3).describe("Joint static friction");
+    t.add("servo_compliance", &robot_data::servo_compliance).parameter().unit("N.m.s/rad")
+        .range(0, 1e6).describe("Motor compliance (0: rigid velocity servo)");
+    t.add("weld_arms_and_head", &robot_data::weld_arms_and_head).parameter()
+        .describe("Hold servos 3-6, 19, 20 rigid in the walk-ready pose (about 2x faster)");
+    t.add("fall_tilt", &robot_data::fall_tilt).parameter().unit("rad").range(0, 3.2)
+        .describe("fallen when the torso tilts more than this");
+    t.add("fall_height", &robot_data::fall_height).parameter().unit("m").range(-10, 10)
+        .describe("fallen when the torso origin is lower than this");
+
+    t.add("joint_angle", &robot_data::joint_angle).output().unit("rad")
+        .describe("Joint angle by servo ID");
+    t.add("gyro_fb", &robot_data::gyro_fb).output()
+        .describe("Front/back gyro as the CM-730 reports it, counts minus 512");
+    t.add("gyro_rl", &robot_data::gyro_rl).output()
+        .describe("Right/left gyro as the CM-730 reports it, counts minus 512");
+    t.add("gyro", &robot_data::gyro).output().unit("rad/s").describe("Torso angular velocity");
+    t.add("acc", &robot_data::acc).output().unit("m/s2").describe("Torso specific force");
+    t.add("base_x", &robot_data::base_x).output().unit("m").describe("Torso position x");
+    t.add("base_y", &robot_data::base_y).output().unit("m").describe("Torso position y");
+    t.add("base_z", &robot_data::base_z).output().unit("m").describe("Torso position z");
+    t.add("roll", &robot_data::roll).output().unit("rad").describe("Torso roll");
+    t.add("pitch", &robot_data::pitch).output().unit("rad").describe("Torso pitch (+ forward)");
+    t.add("yaw", &robot_data::yaw).output().unit("rad").describe("Torso yaw");
+    t.add("com_x", &robot_data::com_x).output().unit("m").describe("Centre of mass x");
+    t.add("com_y", &robot_data::com_y).output().unit("m").describe("Centre of mass y");
+    t.add("com_z", &robot_data::com_z).output().unit("m").describe("Centre of mass z");
+    t.add("left_foot_force", &robot_data::left_foot_force).output().unit("N")
+        .describe("Normal floor force on the left foot");
+    t.add("right_foot_force", &robot_data::right_foot_force).output().unit("N")
+        .describe("Normal floor force on the right foot");
+    t.add("max_penetration", &robot_data::max_penetration).output().unit("m")
+        .describe("Deepest floor penetration in the last physics step");
+    t.add("fallen", &robot_data::fallen).output()
+        .describe("Torso tilt past fall_tilt or torso below fall_height (held until reset)");
+    return t.finish();
+  }
+
+  void exit_initialization() override {
+    build_plant();
+    data_.applied_reset = data_.reset;
+    sim_->set_joint_targets(std::span<const double>(data_.joint_target, static_cast<std::size_t>(sim_->servo_count())));
+    publish();
+  }
+
+  sdk::step_result do_step(sdk::time_ns, sdk::time_ns h) override {
+    if (data_.reset != data_.applied_reset) {
+      sim_->reset();
+      data_.applied_reset = data_.reset;
+    }
+    sim_->set_joint_targets(std::span<const double>(data_.joint_target, static_cast<std::size_t>(sim_->servo_count())));
+    sim_->set_push(data_.push_x, data_.push_y);
+    sim_->step(sdk::to_seconds(h));
+    publish();
+    return sdk::step_result::ok;
+  }
+
+  // state = the data struct followed by the plant's own image (empty before initialization)
+  std::vector<std::byte> save_state() const override {
+    std::vector<std::byte> bytes = sdk::model_base<robot_data>::save_state();
+    if (sim_) {
+      const std::vector<std::uint8_t> image = sim_->save_state();
+      const auto* begin = reinterpret_cast<const std::byte*>(image.data());
+      bytes.insert(bytes.end(), begin, begin + image.size());
+    }
+    return bytes;
+  }
+
+  void restore_state(std::span<const std::byte> bytes) override {
+    if (bytes.size() < sizeof(robot_data)) throw sdk::model_error("robot state is too short");
+    sdk::model_base<robot_data>::restore_state(bytes.first(sizeof(robot_data)));
+    const auto image = bytes.subspan(sizeof(robot_data));
+    if (image.empty()) {
+      sim_.reset();
+      return;
+    }
+    if (!sim_) build_plant();
+    sim_->restore_state(std::span<const std::uint8_t>(
+        reinterpret_cast<const std::uint8_t*>(image.data()), image.size()));
+  }
+
+ private:
+  std::string urdf_path() const {
+    if (data_.urdf.empty()) {
+      return (std::filesystem::path(context_.resource_dir) / "darwin-op.urdf").string();
+    }
+    std::filesystem::path path(data_.urdf.c_str());
+    if (path.is_relative() && !std::filesystem::exists(path) && !context_.resource_dir.empty()) {
+      const auto in_resources = std::filesystem::path(context_.resource_dir) / path;
+      if (std::filesystem::exists(in_resources)) return in_resources.string();
+    }
+    return path.string();
+  }
+
+  void build_plant() {
+    robot_config c = darwin::default_config(urdf_path());
+    c.physics_step = data_.physics_step;
+    c.solver = data_.solver == 0 ? physics_solver::world_step : physics_solver::quick_step;
+    c.erp = data_.erp;
+    c.cfm = data_.cfm;
+    c.contact.mu = data_.friction;
+    c.contact.bounce = data_.bounce;
+    c.contact.soft_erp = data_.contact_soft_erp;
+    c.contact.soft_cfm = data_.contact_soft_cfm;
+    c.servo.p_gain = data_.servo_p_gain;
+    c.servo.max_velocity = data_.servo_max_velocity;
+    c.servo.max_acceleration = data_.servo_max_acceleration;
+    c.servo.torque_limit = data_.servo_torque_limit;
+    c.servo.damping = data_.servo_damping;
+    c.servo.static_friction = data_.servo_static_friction;
+    c.servo.compliance = data_.servo_compliance;
+    if (!data_.weld_arms_and_head) c.rigid_servos.clear();
+    c.fall_tilt = data_.fall_tilt;
+    c.fall_height = data_.fall_height;
+    sim_ = std::make_unique<robot_sim>(std::move(c));
+    if (sim_->servo_count() > k_servos) {
+      throw sdk::model_error(urdf_path() + ": servo IDs above " + std::to_string(k_servos) +
+                             " are not supported by robot.fmu");
+    }
+    context_.log->info("logEvents", "loaded " + urdf_path());
+  }
+
+  void publish() {
+    const robot_outputs& o = sim_->outputs();
+    for (int i = 0; i < k_servos; ++i) {
+      const auto index = static_cast<std::size_t>(i);
+      data_.joint_angle[i] = index < o.joint_angles.size() ? o.joint_angles[index] : 0.0;
+    }
+    data_.gyro_fb = board_counts(o.gyro_fb);
+    data_.gyro_rl = board_counts(o.gyro_rl);
+    for (int i = 0; i < 3; ++i) {
+      data_.gyro[i] = o.gyro[static_cast<std::size_t>(i)];
+      data_.acc[i] = o.acc[static_cast<std::size_t>(i)];
+    }
+    data_.base_x = o.base_position[0];
+    data_.base_y = o.base_position[1];
+    data_.base_z = o.base_position[2];
+    data_.roll = o.roll;
+    data_.pitch = o.pitch;
+    data_.yaw = o.yaw;
+    data_.com_x = o.com[0];
+    data_.com_y = o.com[1];
+    data_.com_z = o.com[2];
+    data_.left_foot_force = o.left_foot_force[2];
+    data_.right_foot_force = o.right_foot_force[2];
+    data_.max_penetration = o.max_penetration;
+    data_.fallen = o.fallen;
+  }
+
+  sdk::instance_context context_;
+  std::unique_ptr<robot_sim> sim_;
+};
+
+}  // namespace
+}  // namespace stride::robot
+
+STRIDE_FMU(stride::robot::robot_model_fmu)

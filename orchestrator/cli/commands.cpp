@@ -1,0 +1,209 @@
+#include "commands.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/fmu.hpp"
+#include "stride/cosim/model_description.hpp"
+#include "stride/cosim/run.hpp"
+#include "stride/cosim/system_builder.hpp"
+#include "stride/cosim/system_structure.hpp"
+
+#ifdef STRIDE_HAVE_FMI_CHECK
+#include "stride/fmi_check/fmu_check.hpp"
+#endif
+
+// models/walk.xml, embedded at build time
+std::string_view stride_default_scenario_xml();
+
+namespace stride::cli {
+
+namespace fs = std::filesystem;
+using namespace stride::cosim;
+
+namespace {
+
+cosim::time_point parse_stop(const std::string& text) {
+  try {
+    return cosim::time_point(parse_duration(text));
+  } catch (const std::exception& e) {
+    throw validation_error(std::string("--stop-time: ") + e.what());
+  }
+}
+
+system_structure load_system(const std::optional<fs::path>& file) {
+  if (file) return parse_system_file(*file);
+  return parse_system_text(stride_default_scenario_xml(), "(embedded) models/walk.xml");
+}
+
+const char* yes_no(bool b) {
+  return b ? "true" : "false";
+}
+
+}  // namespace
+
+int run(const run_arguments& args) {
+  run_options options;
+  options.output_dir = args.output;
+  options.overrides = args.sets;
+  if (args.stop_time) options.stop = parse_stop(*args.stop_time);
+  options.progress = !args.quiet;
+  options.build.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
+  options.build.fmu_debug_logging = args.fmu_debug_log;
+  const run_report report = run_system(load_system(args.system), options);
+  if (!args.quiet) {
+    std::printf(
+        "%s at t = %s s after %lld steps (%.2f s wall, real-time factor %.2f)\n",
+        report.result.terminated_by_component ? ("ended by " + report.result.terminated_by).c_str()
+                                              : "finished",
+        format_seconds(report.result.end_time).c_str(), static_cast<long long>(report.result.steps),
+        report.wall_seconds, report.real_time_factor);
+    std::printf("output: %s\n", report.output_dir.string().c_str());
+  }
+  return 0;
+}
+
+int inspect(const fs::path& fmu_file) {
+  // only the model description is needed: no binary is loaded
+  temp_dir dir("stride-inspect-");
+  extract_archive(fmu_file, dir.path());
+  const fs::path md_file = dir.path() / "modelDescription.xml";
+  if (!fs::is_regular_file(md_file)) {
+    throw fmu_import_error(fmu_file.string() + ": no modelDescription.xml at the archive root");
+  }
+  const model_description md = parse_model_description(md_file);
+  std::ostringstream out;
+  int key_width = 22;
+  auto row = [&](const char* key, const std::string& value) {
+    char buf[80];
+    std::snprintf(buf, sizeof buf, "  %-*s", key_width, key);
+    out << buf << value << "\n";
+  };
+  out << "Model Info\n\n";
+  row("FMI Version", md.fmi_version);
+  std::string type = md.co_simulation ? "Co-Simulation" : "";
+  if (md.has_model_exchange) type += type.empty() ? "Model Exchange" : ", Model Exchange";
+  row("FMI Type", type);
+  row("Model Name", md.model_name);
+  row("Description", md.description);
+  row("GUID", md.guid);
+  row("Author", md.author);
+  row("Version", md.version);
+  row("Generation Tool", md.generation_tool);
+  row("Generation Date", md.generation_date_and_time);
+  if (md.co_simulation) {
+    const auto& cs = *md.co_simulation;
+    out << "\nCo-Simulation Capabilities\n\n";
+    key_width = 40;
+    row("modelIdentifier", cs.model_identifier);
+    row("canHandleVariableCommunicationStepSize",
+        yes_no(cs.can_handle_variable_communication_step_size));
+    row("canInterpolateInputs", yes_no(cs.can_interpolate_inputs));
+    row("maxOutputDerivativeOrder", std::to_string(cs.max_output_derivative_order));
+    row("canBeInstantiatedOnlyOncePerProcess",
+        yes_no(cs.can_be_instantiated_only_once_per_process));
+    row("canNotUseMemoryManagementFunctions", yes_no(cs.can_not_use_memory_management_functions));
+    row("canGetAndSetFMUstate", yes_no(cs.can_get_and_set_fmu_state));
+    row("canSerializeFMUstate", yes_no(cs.can_serialize_fmu_state));
+    row("providesDirectionalDerivative", yes_no(cs.provides_directional_derivative));
+  }
+  const auto& de = md.default_experiment;
+  auto opt = [](const std::optional<double>& d) {
+    if (!d) return std::string("-");
+    std::ostringstream s;
+    s << *d;
+    return s.str();
+  };
+  key_width = 22;
+  out << "\nDefault Experiment\n\n";
+  row("Start Time", opt(de.start_time));
+  row("Stop Time", opt(de.stop_time));
+  row("Tolerance", opt(de.tolerance));
+  row("Step Size", opt(de.step_size));
+
+  out << "\nVariables (" << md.variables.size() << ")\n\n";
+  std::size_t width = 4;
+  for (const auto& v : md.variables) width = std::max(width, v.name.size());
+  char head[256];
+  std::snprintf(head, sizeof head, "%-*s  %-19s  %-11s  %-11s  %-12s  %-8s  %s\n",
+                static_cast<int>(width), "Name", "Causality", "Variability", "Type", "Start",
+                "Unit", "Description");
+  out << head;
+  for (const auto& v : md.variables) {
+    std::string start = v.start.value_or("");
+    if (v.type == variable_type::string && v.start) start = "\"" + start + "\"";
+    std::string unit = v.unit;
+    char line[512];
+    std::snprintf(
+        line, sizeof line, "%-*s  %-19s  %-11s  %-11s  %-12s  %-8s  %s\n", static_cast<int>(width),
+        v.name.c_str(), std::string(to_string(v.causality)).c_str(),
+        std::string(to_string(v.variability)).c_str(), std::string(to_string(v.type)).c_str(),
+        start.c_str(), unit.c_str(), v.description.c_str());
+    out << line;
+  }
+  std::fputs(out.str().c_str(), stdout);
+  return 0;
+}
+
+int validate(const validate_arguments& args) {
+  const bool is_fmu = args.file.extension() == ".fmu";
+  if (!is_fmu) {
+    system_structure system = parse_system_file(args.file);
+    for (const auto& s : args.sets) apply_override(system, s);
+    if (args.stop_time) system.stop = parse_stop(*args.stop_time);
+    build_options options;
+    options.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
+    const built_system built = build_system(system, options);
+    if (!args.quiet) {
+      const auto& algo = built.execution->algorithm();
+      std::string order;
+      for (std::size_t i : algo.order()) {
+        order += (order.empty() ? "" : " -> ") + algo.component_at(i).name();
+      }
+      std::printf(
+          "%s: OK: system '%s', %zu components, %zu connections (%zu variable pairs), "
+          "%s order %s, base step %s s, %s .. %s s\n",
+          args.file.string().c_str(), system.name.c_str(), system.components.size(),
+          system.connections.size(), algo.connections().size(),
+          std::string(to_string(algo.kind())).c_str(), order.c_str(),
+          format_seconds(built.base_step).c_str(), format_seconds(built.start).c_str(),
+          format_seconds(built.stop).c_str());
+    }
+    return 0;
+  }
+
+  int errors = 0;
+#ifdef STRIDE_HAVE_FMI_CHECK
+  const auto findings = stride::fmi_check::check_fmu(args.file);
+  for (const auto& f : findings) {
+    std::fprintf(stderr, "%s\n", stride::fmi_check::format_finding(args.file.string(), f).c_str());
+    if (f.level == stride::fmi_check::finding::severity::error) ++errors;
+  }
+#endif
+  // import and a full initialization, to catch binary, symbol and GUID problems
+  try {
+    auto f = fmu::load(args.file);
+    instance_options io;
+    io.log = stderr_log_sink(log_level::warning);
+    auto c = f->instantiate("validate", io);
+    const auto& de = f->model_description().default_experiment;
+    c->setup(time_from_seconds(de.start_time.value_or(0.0)), std::nullopt);
+    c->enter_initialization();
+    c->exit_initialization();
+    c->terminate();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: error: [import] %s\n", args.file.string().c_str(), e.what());
+    ++errors;
+  }
+  if (errors > 0) {
+    std::fprintf(stderr, "stride: error: %s: %d error(s)\n", args.file.string().c_str(), errors);
+    return 1;
+  }
+  if (!args.quiet) std::printf("%s: OK\n", args.file.string().c_str());
+  return 0;
+}
+
+}  // namespace stride::cli

@@ -1,0 +1,73 @@
+// stride: run a co-simulation from a system XML, inspect or validate FMUs and systems.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "commands.hpp"
+#include "stride/cosim/run.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"stride: FMI 2.0 co-simulation of FMUs wired by a system XML"};
+  app.set_version_flag("--version", std::string(stride::cosim::version()));
+  app.require_subcommand(1);
+
+  stride::cli::run_arguments run_args;
+  std::string system_file;
+  std::string stop_time;
+  auto* run = app.add_subcommand(
+      "run", "Run a system (no SYSTEM.xml: the built-in walking scenario, models/walk.xml)");
+  run->add_option("system", system_file, "System XML file")->check(CLI::ExistingFile);
+  run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
+  run->add_option("--output,-o", run_args.output,
+                  "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>)");
+  run->add_option("--set", run_args.sets, "Parameter or input start value: comp.var=value")
+      ->allow_extra_args(false);
+  run->add_flag("--quiet,-q", run_args.quiet, "No progress display, only warnings and errors");
+  run->add_flag("--fmu-debug-log", run_args.fmu_debug_log,
+                "Instantiate FMUs with debug logging on");
+
+  std::string inspect_file;
+  auto* inspect = app.add_subcommand("inspect", "Show an FMU's model description");
+  inspect->add_option("fmu", inspect_file, "FMU file")->required()->check(CLI::ExistingFile);
+
+  stride::cli::validate_arguments validate_args;
+  std::string validate_file;
+  std::string validate_stop;
+  auto* validate = app.add_subcommand(
+      "validate",
+      "Check an FMU (static checks, import, instantiate) or a system XML (parse, "
+      "build, validate; nothing is run)");
+  validate->add_option("file", validate_file, "FMU or system XML file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  validate->add_option("--stop-time", validate_stop, "Stop time in seconds for a system");
+  validate->add_option("--set", validate_args.sets, "comp.var=value, as for run")
+      ->allow_extra_args(false);
+  validate->add_flag("--quiet,-q", validate_args.quiet, "Print only problems");
+
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (*run) {
+      if (!system_file.empty()) run_args.system = system_file;
+      if (!stop_time.empty()) run_args.stop_time = stop_time;
+      return stride::cli::run(run_args);
+    }
+    if (*inspect) return stride::cli::inspect(inspect_file);
+    if (*validate) {
+      validate_args.file = validate_file;
+      if (!validate_stop.empty()) validate_args.stop_time = validate_stop;
+      return stride::cli::validate(validate_args);
+    }
+  } catch (const std::exception& e) {
+    std::string message = e.what();
+    for (char& c : message) {
+      if (c == '\n') c = ' ';
+    }
+    std::fprintf(stderr, "stride: error: %s\n", message.c_str());
+    return 1;
+  }
+  return 0;
+}

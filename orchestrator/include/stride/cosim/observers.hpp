@@ -1,0 +1,91 @@
+// Observers shipped with libstride: CSV recorder and progress display.
+#ifndef STRIDE_COSIM_OBSERVERS_HPP
+#define STRIDE_COSIM_OBSERVERS_HPP
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "stride/cosim/execution.hpp"
+
+namespace stride::cosim {
+
+/// Glob match with `*` (any run of characters) and `?` (one character).
+bool glob_match(std::string_view pattern, std::string_view text) noexcept;
+
+/// Variables whose full name "comp.var" matches `pattern`. A pattern without wildcards names
+/// exactly one variable of any causality; a wildcard pattern matches inputs and outputs only.
+/// Results are in component order, then model description order.
+std::vector<variable_id> find_variables(const fixed_step_algorithm& algo, std::string_view pattern);
+
+/// Writes one CSV row per recording interval: `time` first, then one column per variable,
+/// headed by its full name "comp.var" (FMPy/cosim style; Booleans as 0/1, strings quoted,
+/// doubles in shortest round-trip form).
+class csv_recorder : public observer {
+ public:
+  /// Records `variables` (an empty list records every output) every `interval` (nullopt = every
+  /// base step; must be a multiple of the base step).
+  csv_recorder(std::filesystem::path file, std::vector<variable_id> variables,
+               std::optional<duration> interval = std::nullopt);
+  /// Records the variables matching any of `patterns`.
+  static std::shared_ptr<csv_recorder> from_patterns(std::filesystem::path file,
+                                                     const fixed_step_algorithm& algo,
+                                                     const std::vector<std::string>& patterns,
+                                                     std::optional<duration> interval = {});
+  ~csv_recorder() override;
+
+  void attach(execution& ex) override;
+  void simulation_initialized(const execution& ex, time_point t) override;
+  void step_complete(const execution& ex, std::int64_t step, time_point t) override;
+  void simulation_ended(const execution& ex, time_point t, const std::string& error) override;
+
+  const std::filesystem::path& file() const noexcept { return file_; }
+  std::size_t rows_written() const noexcept { return rows_; }
+
+ private:
+  void write_row(const execution& ex, time_point t);
+  void flush() noexcept;
+
+  std::filesystem::path file_;
+  std::vector<variable_id> variables_;
+  std::optional<duration> interval_;
+  std::vector<observed_variable> observed_;
+  std::FILE* out_ = nullptr;
+  std::string buffer_;
+  std::size_t rows_ = 0;
+  time_point last_row_{duration::min()};
+};
+
+/// Prints simulated time, real-time factor and ETA on a stream (stderr by default). On a
+/// terminal one line is redrawn a few times per second; otherwise a plain line is printed every
+/// `plain_period` of wall time.
+class progress_display : public observer {
+ public:
+  progress_display(time_point stop, std::FILE* out = stderr, std::optional<bool> terminal = {},
+                   std::chrono::milliseconds plain_period = std::chrono::seconds(5));
+
+  void simulation_initialized(const execution& ex, time_point t) override;
+  void step_complete(const execution& ex, std::int64_t step, time_point t) override;
+  void simulation_ended(const execution& ex, time_point t, const std::string& error) override;
+
+  /// The line that would be printed for simulated time `t` after `wall` seconds.
+  std::string format(time_point t, double wall_seconds) const;
+
+ private:
+  time_point stop_;
+  time_point start_{};
+  std::FILE* out_;
+  bool terminal_;
+  std::chrono::milliseconds period_;
+  std::chrono::steady_clock::time_point wall_start_{};
+  std::chrono::steady_clock::time_point last_print_{};
+  std::uint32_t countdown_ = 0;
+};
+
+}  // namespace stride::cosim
+
+#endif  // STRIDE_COSIM_OBSERVERS_HPP

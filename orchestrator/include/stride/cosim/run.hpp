@@ -1,0 +1,51 @@
+// A complete recorded run: output folder, results CSV, system copy, manifest. Shared by the
+// `stride` CLI and other tools.
+#ifndef STRIDE_COSIM_RUN_HPP
+#define STRIDE_COSIM_RUN_HPP
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stride/cosim/execution.hpp"
+#include "stride/cosim/system_builder.hpp"
+#include "stride/cosim/system_structure.hpp"
+
+namespace stride::cosim {
+
+/// The library version ("0.1.0").
+std::string_view version() noexcept;
+
+struct run_options {
+  /// output folder; empty = ./stride-out/<system-name>-<YYYYmmdd-HHMMSS> (suffixed -2, -3 … if
+  /// it exists)
+  std::filesystem::path output_dir;
+  std::vector<std::string> overrides;  ///< "comp.var=value", applied in order
+  std::optional<time_point> stop;      ///< replaces the system's stop time
+  bool progress = true;                ///< progress display on stderr
+  build_options build;
+};
+
+/// What a run produced.
+struct run_report {
+  std::filesystem::path output_dir;
+  std::filesystem::path results_file;  ///< empty if recording is disabled
+  std::filesystem::path manifest_file;
+  run_result result;
+  double wall_seconds = 0;
+  double real_time_factor = 0;
+  std::string error;  ///< non-empty if the run failed (then also thrown)
+};
+
+/// The default output folder name for a system, relative to the working directory.
+std::filesystem::path default_output_dir(const system_structure& system);
+
+/// Applies overrides, builds, creates the output folder, writes `system.xml` (with overrides),
+/// records, runs and writes `manifest.json`. On a run-time error the results so far and a
+/// manifest with "status": "error" are written and the error is rethrown.
+run_report run_system(system_structure system, const run_options& options);
+
+}  // namespace stride::cosim
+
+#endif  // STRIDE_COSIM_RUN_HPP

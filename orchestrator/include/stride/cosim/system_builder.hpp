@@ -1,0 +1,73 @@
+// Turns a system_structure into a frozen, ready-to-run execution.
+#ifndef STRIDE_COSIM_SYSTEM_BUILDER_HPP
+#define STRIDE_COSIM_SYSTEM_BUILDER_HPP
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stride/cosim/execution.hpp"
+#include "stride/cosim/fmu.hpp"
+#include "stride/cosim/log.hpp"
+#include "stride/cosim/system_structure.hpp"
+
+namespace stride::cosim {
+
+/// Whether an FMU reference is a bundled name ("gait") rather than a path ("x/gait.fmu").
+bool is_bundled_fmu_name(std::string_view fmu) noexcept;
+
+/// The folders searched for bundled FMUs: each entry of $STRIDE_FMU_PATH (':'-separated), then
+/// the build's FMU folder (STRIDE_FMU_OUTPUT_DIR).
+std::vector<std::filesystem::path> default_fmu_search_path();
+
+/// Resolves `component.fmu` to an existing file. \throws validation_error naming the system
+/// file and line, and every place searched.
+std::filesystem::path resolve_fmu(const component_spec& component, const system_structure& system,
+                                  const std::vector<std::filesystem::path>& search_path);
+
+/// Creates a component for a spec; used instead of FMU import when set (tests, proxies).
+using component_factory = std::function<std::unique_ptr<component>(const component_spec&)>;
+
+struct build_options {
+  std::vector<std::filesystem::path> fmu_search_path = default_fmu_search_path();
+  component_factory factory;  ///< empty = import FMUs
+  fmu_import_options import;
+  log_sink log;  ///< component and validation messages; empty = stderr
+  bool fmu_debug_logging = false;
+};
+
+/// Per-component facts for reports and manifests.
+struct component_info {
+  std::string name;
+  std::filesystem::path fmu;  ///< resolved file; empty for factory-made components
+  std::string guid;
+  std::string model_name;
+  std::string generation_tool;
+  int step_multiple = 1;
+};
+
+/// A built system.
+struct built_system {
+  std::unique_ptr<stride::cosim::execution> execution;
+  std::vector<component_info> components;
+  duration base_step{};
+  time_point start{};
+  time_point stop{};
+};
+
+/// Loads components, applies parameters, expands and checks connections, freezes the algorithm.
+/// The stop time must be set (`system.stop`) and (stop - start) must be a whole number of base
+/// steps. \throws validation_error / fmu_import_error / component_error naming file and line.
+built_system build_system(const system_structure& system, const build_options& options = {});
+
+/// Expands one side of a connection spec ("comp.var", "comp.var[*]", "comp.var[2:5]") into
+/// variable indices of `md`, in ascending index order. \throws validation_error.
+std::vector<std::size_t> expand_variable_group(const model_description& md,
+                                               std::string_view variable_pattern,
+                                               const std::string& context);
+
+}  // namespace stride::cosim
+
+#endif  // STRIDE_COSIM_SYSTEM_BUILDER_HPP

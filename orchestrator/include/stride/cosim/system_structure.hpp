@@ -1,0 +1,101 @@
+// The system description: what the system XML holds, as plain data. The XML parser fills it;
+// C++ code can fill it directly and get the same system.
+#ifndef STRIDE_COSIM_SYSTEM_STRUCTURE_HPP
+#define STRIDE_COSIM_SYSTEM_STRUCTURE_HPP
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stride/cosim/algorithm.hpp"
+#include "stride/cosim/time.hpp"
+
+namespace stride::cosim {
+
+/// Where a declaration came from, for error messages ("walk.xml:12"); empty when built in code.
+struct source_location {
+  std::string file;
+  int line = 0;
+  /// "file:line", "file", or "" — the prefix of error messages.
+  std::string str() const;
+};
+
+/// A value for a parameter (or the start value of an input).
+struct parameter_setting {
+  std::string variable;  ///< variable name inside the component
+  std::string value;     ///< text, parsed according to the variable's type
+  source_location where;
+};
+
+/// A component instance.
+struct component_spec {
+  std::string name;
+  /// A path to an .fmu (relative to the system file's folder), or the bare name of a bundled
+  /// FMU ("gait": no '/' and no ".fmu" suffix) looked up in $STRIDE_FMU_PATH and the build's
+  /// FMU folder.
+  std::string fmu;
+  int step_multiple = 1;
+  std::vector<parameter_setting> parameters;
+  source_location where;
+};
+
+/// A connection between "comp.var" names. Either side may be a group: "comp.var[*]" (every
+/// index present) or "comp.var[1:12]" (an inclusive range); the two sides are paired in
+/// ascending index order and must have the same size.
+struct connection_spec {
+  std::string from;
+  std::string to;
+  bool delayed = false;  ///< one-step delay: breaks an algebraic loop
+  source_location where;
+};
+
+/// What to record.
+struct record_spec {
+  bool enabled = true;
+  std::vector<std::string> signals;  ///< "comp.var" patterns with * and ?; empty = all outputs
+  std::vector<source_location> signal_locations;  ///< parallel to `signals` (may be shorter)
+  std::optional<duration> interval;               ///< nullopt = every base step
+  std::string file = "results.csv";               ///< relative to the run's output folder
+  source_location where;
+};
+
+/// A whole system.
+struct system_structure {
+  std::string name = "system";
+  std::string description;
+  /// folder against which relative FMU paths are resolved (the system file's folder)
+  std::filesystem::path base_dir;
+  source_location where;  ///< the system file
+  time_point start{};
+  std::optional<time_point> stop;
+  std::optional<duration> base_step;  ///< nullopt = the smallest DefaultExperiment stepSize
+  algorithm_kind algorithm = algorithm_kind::gauss_seidel;
+  std::vector<component_spec> components;
+  std::vector<connection_spec> connections;
+  record_spec record;
+
+  /// Convenience for C++ callers; each returns the added element.
+  component_spec& add_component(std::string name, std::string fmu, int step_multiple = 1);
+  connection_spec& connect(std::string from, std::string to, bool delayed = false);
+  /// Sets (or replaces) "comp.var" = value. \throws validation_error for an unknown component
+  /// or a name without a dot.
+  void set(const std::string& full_name, std::string value, source_location where = {});
+  component_spec* find_component(std::string_view name) noexcept;
+};
+
+/// Applies a command-line override "comp.var=value" via system_structure::set.
+/// \throws validation_error if the text has no '=' or names no component.
+void apply_override(system_structure& system, const std::string& assignment);
+
+/// Reads a system XML file. \throws validation_error naming the file and line.
+system_structure parse_system_file(const std::filesystem::path& file);
+/// Reads system XML held in memory; `file` names it in messages and gives the base folder.
+system_structure parse_system_text(std::string_view xml, const std::filesystem::path& file);
+/// Writes a system as XML that parse_system_text reads back to the same structure. Bundled
+/// FMU names stay names; relative FMU paths are made absolute when `absolute_fmu_paths`.
+std::string to_xml(const system_structure& system, bool absolute_fmu_paths = true);
+
+}  // namespace stride::cosim
+
+#endif  // STRIDE_COSIM_SYSTEM_STRUCTURE_HPP

@@ -1,0 +1,317 @@
+#include "stride/cosim/fmu.hpp"
+
+#include <dlfcn.h>
+
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "stride/cosim/error.hpp"
+#include "stride/fmi2/fmi2_api.h"
+
+namespace stride::cosim {
+
+namespace fs = std::filesystem;
+
+std::string file_uri(const fs::path& absolute_path) {
+  static constexpr char hex[] = "0123456789ABCDEF";
+  std::string out = "file://";
+  for (const unsigned char c : absolute_path.generic_string()) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '/' || c == '-' || c == '_' || c == '.' || c == '~';
+    if (plain) {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The 34 resolved entry points.
+struct fmi2_functions {
+#define STRIDE_DECLARE_POINTER(name) name##TYPE* name = nullptr;
+  STRIDE_FMI2_CS_FUNCTIONS(STRIDE_DECLARE_POINTER)
+#undef STRIDE_DECLARE_POINTER
+};
+
+const char* status_name(fmi2Status s) {
+  switch (s) {
+    case fmi2OK:
+      return "fmi2OK";
+    case fmi2Warning:
+      return "fmi2Warning";
+    case fmi2Discard:
+      return "fmi2Discard";
+    case fmi2Error:
+      return "fmi2Error";
+    case fmi2Fatal:
+      return "fmi2Fatal";
+    case fmi2Pending:
+      return "fmi2Pending";
+  }
+  return "unknown status";
+}
+
+}  // namespace
+
+class fmu::impl {
+ public:
+  fs::path file;
+  temp_dir dir;
+  stride::cosim::model_description md;
+  void* library = nullptr;
+  fmi2_functions fn;
+  int instances = 0;
+
+  explicit impl(temp_dir d) : dir(std::move(d)) {}
+  ~impl() {
+    if (library != nullptr) ::dlclose(library);
+  }
+};
+
+namespace {
+
+// One instance of an FMU.
+class fmu_component final : public component {
+ public:
+  fmu_component(std::shared_ptr<fmu> owner, fmu::impl& fmu_impl, std::string name,
+                const instance_options& options)
+      : owner_(std::move(owner)),
+        fmu_(fmu_impl),
+        fn_(fmu_impl.fn),
+        name_(std::move(name)),
+        log_(options.log ? options.log : stderr_log_sink()),
+        callbacks_{&fmu_component::logger, std::calloc, std::free, nullptr, this} {
+    const std::string uri = owner_->resource_uri();
+    instance_ =
+        fn_.fmi2Instantiate(name_.c_str(), fmi2CoSimulation, fmu_.md.guid.c_str(), uri.c_str(),
+                            &callbacks_, fmi2False, options.logging_on ? fmi2True : fmi2False);
+    if (instance_ == nullptr) {
+      throw component_error("component '" + name_ + "': fmi2Instantiate of " + fmu_.file.string() +
+                            " failed (GUID " + fmu_.md.guid +
+                            "; see the FMU's log messages above)");
+    }
+  }
+
+  ~fmu_component() override {
+    if (instance_ == nullptr || fatal_) return;
+    if (initialized_ && !terminated_ && !failed_) fn_.fmi2Terminate(instance_);
+    fn_.fmi2FreeInstance(instance_);
+  }
+
+  const std::string& name() const noexcept override { return name_; }
+  const stride::cosim::model_description& model_description() const noexcept override {
+    return fmu_.md;
+  }
+
+  void setup(time_point start, std::optional<time_point> stop) override {
+    check("fmi2SetupExperiment",
+          fn_.fmi2SetupExperiment(instance_, fmi2False, 0.0, to_seconds(start),
+                                  stop ? fmi2True : fmi2False, stop ? to_seconds(*stop) : 0.0));
+  }
+  void enter_initialization() override {
+    check("fmi2EnterInitializationMode", fn_.fmi2EnterInitializationMode(instance_));
+    initialized_ = true;
+  }
+  void exit_initialization() override {
+    check("fmi2ExitInitializationMode", fn_.fmi2ExitInitializationMode(instance_));
+  }
+
+  step_result do_step(time_point t, duration dt) override {
+    const fmi2Status s = fn_.fmi2DoStep(instance_, to_seconds(t), to_seconds(dt), fmi2True);
+    if (s == fmi2OK || s == fmi2Warning) return step_result::complete;
+    if (s == fmi2Discard) {
+      fmi2Boolean terminated = fmi2False;
+      const fmi2Status q = fn_.fmi2GetBooleanStatus(instance_, fmi2Terminated, &terminated);
+      if ((q == fmi2OK || q == fmi2Warning) && terminated == fmi2True) {
+        return step_result::terminate;
+      }
+      failed_ = true;
+      throw component_error("component '" + name_ +
+                            "': fmi2DoStep returned fmi2Discard without requesting termination "
+                            "(fixed-step masters cannot retry a step)");
+    }
+    check("fmi2DoStep", s);
+    return step_result::complete;
+  }
+
+  void terminate() override {
+    if (!initialized_ || terminated_ || failed_ || fatal_) return;
+    terminated_ = true;
+    check("fmi2Terminate", fn_.fmi2Terminate(instance_));
+  }
+
+  void get_real(std::span<const value_reference> vr, std::span<double> out) override {
+    check("fmi2GetReal", fn_.fmi2GetReal(instance_, vr.data(), vr.size(), out.data()));
+  }
+  void get_integer(std::span<const value_reference> vr, std::span<int> out) override {
+    check("fmi2GetInteger", fn_.fmi2GetInteger(instance_, vr.data(), vr.size(), out.data()));
+  }
+  void get_boolean(std::span<const value_reference> vr, std::span<bool> out) override {
+    ints_.resize(vr.size());
+    check("fmi2GetBoolean", fn_.fmi2GetBoolean(instance_, vr.data(), vr.size(), ints_.data()));
+    for (std::size_t i = 0; i < vr.size(); ++i) out[i] = ints_[i] != fmi2False;
+  }
+  void get_string(std::span<const value_reference> vr, std::span<std::string> out) override {
+    strings_.resize(vr.size());
+    check("fmi2GetString", fn_.fmi2GetString(instance_, vr.data(), vr.size(), strings_.data()));
+    for (std::size_t i = 0; i < vr.size(); ++i) out[i] = strings_[i] ? strings_[i] : "";
+  }
+  void set_real(std::span<const value_reference> vr, std::span<const double> in) override {
+    check("fmi2SetReal", fn_.fmi2SetReal(instance_, vr.data(), vr.size(), in.data()));
+  }
+  void set_integer(std::span<const value_reference> vr, std::span<const int> in) override {
+    check("fmi2SetInteger", fn_.fmi2SetInteger(instance_, vr.data(), vr.size(), in.data()));
+  }
+  void set_boolean(std::span<const value_reference> vr, std::span<const bool> in) override {
+    ints_.resize(vr.size());
+    for (std::size_t i = 0; i < vr.size(); ++i) ints_[i] = in[i] ? fmi2True : fmi2False;
+    check("fmi2SetBoolean", fn_.fmi2SetBoolean(instance_, vr.data(), vr.size(), ints_.data()));
+  }
+  void set_string(std::span<const value_reference> vr, std::span<const std::string> in) override {
+    strings_.resize(vr.size());
+    for (std::size_t i = 0; i < vr.size(); ++i) strings_[i] = in[i].c_str();
+    check("fmi2SetString", fn_.fmi2SetString(instance_, vr.data(), vr.size(), strings_.data()));
+  }
+
+ private:
+  void check(const char* function, fmi2Status s) {
+    if (s == fmi2OK || s == fmi2Warning) return;
+    if (s == fmi2Fatal) fatal_ = true;
+    if (s == fmi2Error || s == fmi2Discard || s == fmi2Pending) failed_ = true;
+    throw component_error("component '" + name_ + "': " + function + " returned " + status_name(s));
+  }
+
+  static void logger(fmi2ComponentEnvironment env, fmi2String /*instance*/, fmi2Status status,
+                     fmi2String category, fmi2String message, ...) {
+    auto* self = static_cast<fmu_component*>(env);
+    if (self == nullptr || message == nullptr) return;
+    std::va_list args;
+    va_start(args, message);
+    std::va_list copy;
+    va_copy(copy, args);
+    const int n = std::vsnprintf(nullptr, 0, message, copy);
+    va_end(copy);
+    std::string text;
+    if (n > 0) {
+      text.resize(static_cast<std::size_t>(n) + 1);
+      std::vsnprintf(text.data(), text.size(), message, args);
+      text.resize(static_cast<std::size_t>(n));
+    }
+    va_end(args);
+    log_level level = log_level::info;
+    if (status == fmi2Warning) level = log_level::warning;
+    if (status == fmi2Error || status == fmi2Fatal || status == fmi2Discard) {
+      level = log_level::error;
+    }
+    try {
+      self->log_(level, self->name_, category ? category : "", text);
+    } catch (...) {
+      // a throwing sink must not unwind through C code
+    }
+  }
+
+  std::shared_ptr<fmu> owner_;
+  fmu::impl& fmu_;
+  const fmi2_functions& fn_;
+  std::string name_;
+  log_sink log_;
+  fmi2CallbackFunctions callbacks_;
+  fmi2Component instance_ = nullptr;
+  bool initialized_ = false;
+  bool terminated_ = false;
+  bool failed_ = false;
+  bool fatal_ = false;
+  std::vector<fmi2Boolean> ints_;
+  std::vector<fmi2String> strings_;
+};
+
+}  // namespace
+
+fmu::fmu(std::unique_ptr<impl> pimpl) : pimpl_(std::move(pimpl)) {}
+fmu::~fmu() = default;
+
+const fs::path& fmu::file() const noexcept {
+  return pimpl_->file;
+}
+const fs::path& fmu::extracted_dir() const noexcept {
+  return pimpl_->dir.path();
+}
+const model_description& fmu::model_description() const noexcept {
+  return pimpl_->md;
+}
+std::string fmu::resource_uri() const {
+  return file_uri(pimpl_->dir.path() / "resources") + "/";
+}
+
+std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& options) {
+  const std::string where = file.string();
+  if (!fs::is_regular_file(file)) throw fmu_import_error(where + ": FMU file not found");
+
+  // the temp dir is removed by RAII on every exit path below
+  auto p = std::make_unique<impl>(temp_dir("stride-fmu-", options.extract_root));
+  p->file = fs::absolute(file);
+  extract_archive(file, p->dir.path(), options.limits);
+
+  const fs::path md_file = p->dir.path() / "modelDescription.xml";
+  if (!fs::is_regular_file(md_file)) {
+    throw fmu_import_error(where + ": no modelDescription.xml at the archive root");
+  }
+  try {
+    p->md = parse_model_description(md_file);
+  } catch (const fmu_import_error& e) {
+    // name the FMU rather than the temporary path
+    std::string message = e.what();
+    const std::string tmp = md_file.string();
+    if (message.rfind(tmp, 0) == 0)
+      message = where + "!modelDescription.xml" + message.substr(tmp.size());
+    throw fmu_import_error(message);
+  }
+  if (!p->md.co_simulation) {
+    throw fmu_import_error(where + ": not a Co-Simulation FMU (no <CoSimulation> element)");
+  }
+  const std::string& id = p->md.co_simulation->model_identifier;
+  const fs::path binary = p->dir.path() / "binaries" / "linux64" / (id + ".so");
+  if (!fs::is_regular_file(binary)) {
+    throw fmu_import_error(where + ": missing binary binaries/linux64/" + id +
+                           ".so (the FMU has no binary for this platform)");
+  }
+  p->library = ::dlopen(binary.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (p->library == nullptr) {
+    const char* why = ::dlerror();
+    throw fmu_import_error(where + ": cannot load binaries/linux64/" + id +
+                           ".so: " + (why ? why : "unknown error"));
+  }
+#define STRIDE_RESOLVE(name)                                                                   \
+  p->fn.name = reinterpret_cast<name##TYPE*>(::dlsym(p->library, #name));                      \
+  if (p->fn.name == nullptr) {                                                                 \
+    throw fmu_import_error(where + ": binaries/linux64/" + id + ".so does not export " #name); \
+  }
+  STRIDE_FMI2_CS_FUNCTIONS(STRIDE_RESOLVE)
+#undef STRIDE_RESOLVE
+  const std::string version = p->fn.fmi2GetVersion() ? p->fn.fmi2GetVersion() : "";
+  if (version != "2.0") {
+    throw fmu_import_error(where + ": fmi2GetVersion() returns \"" + version + "\", not \"2.0\"");
+  }
+  return std::shared_ptr<fmu>(new fmu(std::move(p)));
+}
+
+std::unique_ptr<component> fmu::instantiate(const std::string& instance_name,
+                                            const instance_options& options) {
+  const auto& cs = *pimpl_->md.co_simulation;
+  if (cs.can_be_instantiated_only_once_per_process && pimpl_->instances > 0) {
+    throw component_error("component '" + instance_name + "': " + pimpl_->file.string() +
+                          " can be instantiated only once per process");
+  }
+  auto c = std::make_unique<fmu_component>(shared_from_this(), *pimpl_, instance_name, options);
+  ++pimpl_->instances;
+  return c;
+}
+
+}  // namespace stride::cosim

@@ -1,0 +1,256 @@
+#include "stride/cosim/observers.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "stride/cosim/error.hpp"
+
+namespace stride::cosim {
+
+bool glob_match(std::string_view pattern, std::string_view text) noexcept {
+  // iterative matcher with one backtrack point for the last '*'
+  std::size_t p = 0, t = 0, star = std::string_view::npos, mark = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
+      ++p;
+      ++t;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      mark = t;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      t = ++mark;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+std::vector<variable_id> find_variables(const fixed_step_algorithm& algo,
+                                        std::string_view pattern) {
+  const bool wildcard = pattern.find_first_of("*?") != std::string_view::npos;
+  std::vector<variable_id> found;
+  for (std::size_t c = 0; c < algo.component_count(); ++c) {
+    const auto& comp = algo.component_at(c);
+    const auto& vars = comp.model_description().variables;
+    for (std::size_t v = 0; v < vars.size(); ++v) {
+      if (wildcard && vars[v].causality != causality::output &&
+          vars[v].causality != causality::input) {
+        continue;
+      }
+      const std::string full = comp.name() + "." + vars[v].name;
+      if (wildcard ? glob_match(pattern, full) : full == pattern) found.push_back({c, v});
+    }
+  }
+  return found;
+}
+
+namespace {
+
+void append_csv_field(std::string& out, std::string_view s) {
+  if (s.find_first_of(",\"\n\r") == std::string_view::npos) {
+    out += s;
+    return;
+  }
+  out += '"';
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+}
+
+void append_double(std::string& out, double d) {
+  char buf[32];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d);
+  if (ec == std::errc()) out.append(buf, end);
+}
+
+}  // namespace
+
+csv_recorder::csv_recorder(std::filesystem::path file, std::vector<variable_id> variables,
+                           std::optional<duration> interval)
+    : file_(std::move(file)), variables_(std::move(variables)), interval_(interval) {}
+
+std::shared_ptr<csv_recorder> csv_recorder::from_patterns(std::filesystem::path file,
+                                                          const fixed_step_algorithm& algo,
+                                                          const std::vector<std::string>& patterns,
+                                                          std::optional<duration> interval) {
+  std::vector<variable_id> vars;
+  for (const auto& p : patterns) {
+    const auto found = find_variables(algo, p);
+    if (found.empty()) throw validation_error("record signal '" + p + "' matches no variable");
+    for (const auto& v : found) {
+      if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
+    }
+  }
+  if (vars.empty() && patterns.empty()) vars = find_variables(algo, "*");
+  return std::make_shared<csv_recorder>(std::move(file), std::move(vars), interval);
+}
+
+csv_recorder::~csv_recorder() {
+  flush();
+}
+
+void csv_recorder::attach(execution& ex) {
+  auto& algo = ex.algorithm();
+  if (interval_) {
+    if (*interval_ <= duration::zero() || *interval_ % algo.base_step() != duration::zero()) {
+      throw validation_error("recording interval " + format_seconds(*interval_) +
+                             " s is not a positive multiple of the base step " +
+                             format_seconds(algo.base_step()) + " s");
+    }
+  }
+  if (variables_.empty()) {
+    // every output
+    for (std::size_t c = 0; c < algo.component_count(); ++c) {
+      const auto& vars = algo.component_at(c).model_description().variables;
+      for (std::size_t v = 0; v < vars.size(); ++v) {
+        if (vars[v].causality == causality::output) variables_.push_back({c, v});
+      }
+    }
+  }
+  observed_.clear();
+  for (const auto& v : variables_) observed_.push_back(algo.observe(v));
+  if (!file_.parent_path().empty()) std::filesystem::create_directories(file_.parent_path());
+  out_ = std::fopen(file_.c_str(), "wb");
+  if (out_ == nullptr) {
+    throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+  }
+  buffer_ = "time";
+  for (const auto& v : variables_) {
+    buffer_ += ',';
+    append_csv_field(buffer_, algo.full_name(v));
+  }
+  buffer_ += '\n';
+}
+
+void csv_recorder::write_row(const execution& ex, time_point t) {
+  if (t == last_row_ || out_ == nullptr) return;
+  last_row_ = t;
+  const auto& algo = ex.algorithm();
+  buffer_ += format_seconds(t);
+  for (const auto& o : observed_) {
+    buffer_ += ',';
+    switch (o.type) {
+      case variable_type::real:
+        append_double(buffer_, algo.real_value(o));
+        break;
+      case variable_type::integer:
+      case variable_type::enumeration:
+        buffer_ += std::to_string(algo.integer_value(o));
+        break;
+      case variable_type::boolean:
+        buffer_ += algo.boolean_value(o) ? '1' : '0';
+        break;
+      case variable_type::string: {
+        // always quoted so an empty string stays a field
+        buffer_ += '"';
+        for (char c : algo.string_value(o)) {
+          if (c == '"') buffer_ += '"';
+          buffer_ += c;
+        }
+        buffer_ += '"';
+        break;
+      }
+    }
+  }
+  buffer_ += '\n';
+  ++rows_;
+  if (buffer_.size() > (1u << 16)) flush();
+}
+
+void csv_recorder::flush() noexcept {
+  if (out_ == nullptr) return;
+  if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+  buffer_.clear();
+  std::fflush(out_);
+}
+
+void csv_recorder::simulation_initialized(const execution& ex, time_point t) {
+  write_row(ex, t);
+}
+
+void csv_recorder::step_complete(const execution& ex, std::int64_t /*step*/, time_point t) {
+  if (interval_ && (t - ex.start_time()) % *interval_ != duration::zero()) return;
+  write_row(ex, t);
+}
+
+void csv_recorder::simulation_ended(const execution& /*ex*/, time_point /*t*/,
+                                    const std::string& /*error*/) {
+  flush();
+  if (out_ != nullptr) {
+    std::fclose(out_);
+    out_ = nullptr;
+  }
+}
+
+progress_display::progress_display(time_point stop, std::FILE* out, std::optional<bool> terminal,
+                                   std::chrono::milliseconds plain_period)
+    : stop_(stop),
+      out_(out),
+      terminal_(terminal ? *terminal : ::isatty(::fileno(out)) != 0),
+      period_(terminal_ ? std::chrono::milliseconds(200) : plain_period) {}
+
+std::string progress_display::format(time_point t, double wall) const {
+  const double sim = to_seconds(t - start_);
+  const double total = to_seconds(stop_ - start_);
+  const double rtf = wall > 0 ? sim / wall : 0.0;
+  const double percent = total > 0 ? 100.0 * sim / total : 100.0;
+  char buf[160];
+  if (rtf > 0 && sim < total) {
+    const double eta = (total - sim) / rtf;
+    std::snprintf(buf, sizeof buf, "t = %.3f / %.3f s (%.1f%%), RTF %.2fx, ETA %.0f s",
+                  to_seconds(t), to_seconds(stop_), percent, rtf, std::ceil(eta));
+  } else {
+    std::snprintf(buf, sizeof buf, "t = %.3f / %.3f s (%.1f%%), RTF %.2fx", to_seconds(t),
+                  to_seconds(stop_), percent, rtf);
+  }
+  return buf;
+}
+
+void progress_display::simulation_initialized(const execution& ex, time_point t) {
+  start_ = ex.start_time();
+  wall_start_ = last_print_ = std::chrono::steady_clock::now();
+  (void)t;
+}
+
+void progress_display::step_complete(const execution& /*ex*/, std::int64_t /*step*/, time_point t) {
+  // look at the wall clock only every few steps
+  if (countdown_ > 0) {
+    --countdown_;
+    return;
+  }
+  countdown_ = 15;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_print_ < period_) return;
+  last_print_ = now;
+  const double wall = std::chrono::duration<double>(now - wall_start_).count();
+  const std::string line = format(t, wall);
+  if (terminal_) {
+    std::fprintf(out_, "\r\033[K%s", line.c_str());
+  } else {
+    std::fprintf(out_, "stride: %s\n", line.c_str());
+  }
+  std::fflush(out_);
+}
+
+void progress_display::simulation_ended(const execution& /*ex*/, time_point t,
+                                        const std::string& /*error*/) {
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+  const std::string line = format(t, wall);
+  if (terminal_) {
+    std::fprintf(out_, "\r\033[K%s, wall %.2f s\n", line.c_str(), wall);
+  } else {
+    std::fprintf(out_, "stride: %s, wall %.2f s\n", line.c_str(), wall);
+  }
+  std::fflush(out_);
+}
+
+}  // namespace stride::cosim

@@ -1,0 +1,219 @@
+#include "stride/cosim/run.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/observers.hpp"
+
+#ifndef STRIDE_VERSION
+#define STRIDE_VERSION "0.0.0"
+#endif
+
+namespace stride::cosim {
+
+namespace fs = std::filesystem;
+
+std::string_view version() noexcept {
+  return STRIDE_VERSION;
+}
+
+namespace {
+
+std::string json_string(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string json_number(double d) {
+  std::ostringstream s;
+  s.precision(6);
+  s << d;
+  return s.str();
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw error("cannot write " + file.string());
+}
+
+struct manifest_data {
+  const system_structure* system = nullptr;
+  const built_system* built = nullptr;
+  const run_report* report = nullptr;
+  std::string started;
+};
+
+std::string manifest_json(const manifest_data& m) {
+  const auto& s = *m.system;
+  const auto& r = *m.report;
+  std::ostringstream j;
+  j << "{\n";
+  j << "  \"stride_version\": " << json_string(version()) << ",\n";
+  j << "  \"status\": " << json_string(r.error.empty() ? "ok" : "error") << ",\n";
+  if (!r.error.empty()) j << "  \"error\": " << json_string(r.error) << ",\n";
+  j << "  \"system\": " << json_string(s.name) << ",\n";
+  j << "  \"system_file\": " << json_string(s.where.file) << ",\n";
+  j << "  \"started_utc\": " << json_string(m.started) << ",\n";
+  j << "  \"algorithm\": " << json_string(to_string(s.algorithm)) << ",\n";
+  j << "  \"start_time\": " << format_seconds(s.start) << ",\n";
+  if (m.built) {
+    j << "  \"stop_time\": " << format_seconds(m.built->stop) << ",\n";
+    j << "  \"base_step\": " << format_seconds(m.built->base_step) << ",\n";
+  }
+  j << "  \"end_time\": " << format_seconds(r.result.end_time) << ",\n";
+  j << "  \"steps\": " << r.result.steps << ",\n";
+  j << "  \"ended_by\": "
+    << json_string(r.result.terminated_by_component
+                       ? "component " + r.result.terminated_by + " requested termination"
+                       : (r.error.empty() ? "stop time" : "error"))
+    << ",\n";
+  j << "  \"wall_time_s\": " << json_number(r.wall_seconds) << ",\n";
+  j << "  \"real_time_factor\": " << json_number(r.real_time_factor) << ",\n";
+  // seeds: any parameter called seed or *_seed that the system sets
+  std::string seeds;
+  for (const auto& c : s.components) {
+    for (const auto& p : c.parameters) {
+      if (p.variable == "seed" || p.variable.ends_with("_seed")) {
+        seeds += (seeds.empty() ? "" : ", ") + json_string(c.name + "." + p.variable) + ": " +
+                 json_string(p.value);
+      }
+    }
+  }
+  j << "  \"seed\": " << (seeds.empty() ? "null" : "{" + seeds + "}") << ",\n";
+  j << "  \"results\": " << json_string(r.results_file.filename().string()) << ",\n";
+  j << "  \"components\": [";
+  if (m.built) {
+    for (std::size_t i = 0; i < m.built->components.size(); ++i) {
+      const auto& c = m.built->components[i];
+      j << (i ? ",\n" : "\n") << "    {\"name\": " << json_string(c.name)
+        << ", \"fmu\": " << json_string(c.fmu.string()) << ", \"guid\": " << json_string(c.guid)
+        << ", \"model_name\": " << json_string(c.model_name)
+        << ", \"generation_tool\": " << json_string(c.generation_tool)
+        << ", \"step_multiple\": " << c.step_multiple << "}";
+    }
+    if (!m.built->components.empty()) j << "\n  ";
+  }
+  j << "]\n}\n";
+  return j.str();
+}
+
+}  // namespace
+
+fs::path default_output_dir(const system_structure& system) {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&t, &tm);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+  const fs::path base = fs::path("stride-out") / (system.name + "-" + stamp);
+  fs::path candidate = base;
+  for (int n = 2; fs::exists(candidate); ++n) {
+    candidate = base.string() + "-" + std::to_string(n);
+  }
+  return candidate;
+}
+
+run_report run_system(system_structure system, const run_options& options) {
+  for (const auto& o : options.overrides) apply_override(system, o);
+  if (options.stop) system.stop = *options.stop;
+
+  built_system built = build_system(system, options.build);
+  run_report report;
+  report.output_dir = options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
+  fs::create_directories(report.output_dir);
+  write_file(report.output_dir / "system.xml", to_xml(system));
+  report.manifest_file = report.output_dir / "manifest.json";
+
+  auto& ex = *built.execution;
+  if (system.record.enabled) {
+    report.results_file = report.output_dir / system.record.file;
+    std::vector<variable_id> vars;
+    for (std::size_t i = 0; i < system.record.signals.size(); ++i) {
+      const auto& pattern = system.record.signals[i];
+      const auto found = find_variables(ex.algorithm(), pattern);
+      if (found.empty()) {
+        const std::string where = i < system.record.signal_locations.size()
+                                      ? system.record.signal_locations[i].str()
+                                      : system.where.str();
+        throw validation_error((where.empty() ? "" : where + ": ") + "record signal '" + pattern +
+                               "' matches no variable");
+      }
+      for (const auto& v : found) {
+        if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
+      }
+    }
+    try {
+      ex.add_observer(
+          std::make_shared<csv_recorder>(report.results_file, vars, system.record.interval));
+    } catch (const validation_error& e) {
+      const std::string where = system.record.where.str();
+      throw validation_error((where.empty() ? "" : where + ": ") + e.what());
+    }
+  }
+  if (options.progress) ex.add_observer(std::make_shared<progress_display>(built.stop));
+
+  manifest_data m{&system, &built, &report, utc_now()};
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto finish_report = [&] {
+    report.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    const double simulated = to_seconds(report.result.end_time - system.start);
+    report.real_time_factor = report.wall_seconds > 0 ? simulated / report.wall_seconds : 0.0;
+  };
+  try {
+    report.result = ex.simulate_until(built.stop);
+    ex.end();
+  } catch (const std::exception& e) {
+    report.error = e.what();
+    report.result.end_time = ex.current_time();
+    report.result.steps = ex.algorithm().step_count();
+    finish_report();
+    write_file(report.manifest_file, manifest_json(m));
+    throw;
+  }
+  finish_report();
+  write_file(report.manifest_file, manifest_json(m));
+  return report;
+}
+
+}  // namespace stride::cosim

@@ -1,0 +1,342 @@
+#include "stride/cosim/system_structure.hpp"
+
+#include <tinyxml2.h>
+
+#include <charconv>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+#include "stride/cosim/error.hpp"
+#include "xml_util.hpp"
+
+namespace stride::cosim {
+
+namespace fs = std::filesystem;
+
+std::string source_location::str() const {
+  if (file.empty()) return {};
+  return line > 0 ? file + ":" + std::to_string(line) : file;
+}
+
+component_spec& system_structure::add_component(std::string component_name, std::string fmu_ref,
+                                                int step_multiple) {
+  component_spec c;
+  c.name = std::move(component_name);
+  c.fmu = std::move(fmu_ref);
+  c.step_multiple = step_multiple;
+  components.push_back(std::move(c));
+  return components.back();
+}
+
+connection_spec& system_structure::connect(std::string from, std::string to, bool delayed) {
+  connection_spec c;
+  c.from = std::move(from);
+  c.to = std::move(to);
+  c.delayed = delayed;
+  connections.push_back(std::move(c));
+  return connections.back();
+}
+
+component_spec* system_structure::find_component(std::string_view component_name) noexcept {
+  for (auto& c : components) {
+    if (c.name == component_name) return &c;
+  }
+  return nullptr;
+}
+
+void system_structure::set(const std::string& full_name, std::string value, source_location at) {
+  const auto dot = full_name.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == full_name.size()) {
+    throw validation_error("'" + full_name + "' is not of the form component.variable");
+  }
+  const std::string comp = full_name.substr(0, dot);
+  const std::string var = full_name.substr(dot + 1);
+  component_spec* c = find_component(comp);
+  if (c == nullptr) {
+    throw validation_error("'" + full_name + "': the system has no component '" + comp + "'");
+  }
+  for (auto& p : c->parameters) {
+    if (p.variable == var) {
+      p.value = std::move(value);
+      p.where = std::move(at);
+      return;
+    }
+  }
+  c->parameters.push_back({var, std::move(value), std::move(at)});
+}
+
+void apply_override(system_structure& system, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos) {
+    throw validation_error("--set '" + assignment + "': expected component.variable=value");
+  }
+  try {
+    system.set(std::string(detail::trim(assignment.substr(0, eq))), assignment.substr(eq + 1),
+               {"--set " + assignment, 0});
+  } catch (const validation_error& e) {
+    throw validation_error(std::string("--set: ") + e.what());
+  }
+}
+
+namespace {
+
+using detail::attribute;
+
+class system_reader {
+ public:
+  explicit system_reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(int line, const std::string& message) const {
+    throw validation_error(source_location{file_, line}.str() + ": " + message);
+  }
+
+  source_location at(const tinyxml2::XMLElement* e) const { return {file_, e->GetLineNum()}; }
+
+  // rejects attributes that are not in `allowed` (typos should not pass silently)
+  void check_attributes(const tinyxml2::XMLElement* e,
+                        std::initializer_list<std::string_view> allowed) const {
+    for (auto* a = e->FirstAttribute(); a != nullptr; a = a->Next()) {
+      bool ok = false;
+      for (auto name : allowed) ok = ok || name == a->Name();
+      if (!ok) {
+        fail(e->GetLineNum(),
+             std::string("unknown attribute '") + a->Name() + "' on <" + e->Name() + ">");
+      }
+    }
+  }
+
+  std::string required(const tinyxml2::XMLElement* e, const char* name) const {
+    const char* v = e->Attribute(name);
+    if (v == nullptr || *v == '\0') {
+      fail(e->GetLineNum(), std::string("<") + e->Name() + "> needs a " + name + " attribute");
+    }
+    return v;
+  }
+
+  duration seconds(const tinyxml2::XMLElement* e, const char* name) const {
+    const std::string text = required(e, name);
+    try {
+      return parse_duration(text);
+    } catch (const std::exception& ex) {
+      fail(e->GetLineNum(), std::string(name) + ": " + ex.what());
+    }
+  }
+
+  bool boolean(const tinyxml2::XMLElement* e, const char* name, bool fallback) const {
+    const char* v = e->Attribute(name);
+    if (v == nullptr) return fallback;
+    const std::string_view s(v);
+    if (s == "true" || s == "1") return true;
+    if (s == "false" || s == "0") return false;
+    fail(e->GetLineNum(), std::string(name) + "=\"" + v + "\" is not true or false");
+  }
+
+  system_structure read(const tinyxml2::XMLDocument& doc, const fs::path& path) const {
+    if (doc.Error()) {
+      fail(doc.ErrorLineNum(), "malformed XML: " + detail::describe_error(doc));
+    }
+    const auto* root = doc.RootElement();
+    if (root == nullptr || std::string_view(root->Name()) != "system") {
+      fail(root ? root->GetLineNum() : 0, "the root element must be <system>");
+    }
+    check_attributes(root, {"name", "description", "version"});
+    system_structure s;
+    s.where = {file_, 0};
+    s.base_dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    s.name = attribute(root, "name").value_or(path.stem().string());
+    s.description = attribute(root, "description").value_or("");
+    if (const auto v = attribute(root, "version"); v && *v != "1") {
+      fail(root->GetLineNum(), "unsupported system format version \"" + *v + "\" (expected 1)");
+    }
+    bool seen_simulation = false;
+    bool seen_record = false;
+    for (auto* e = root->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
+      const std::string_view tag = e->Name();
+      if (tag == "simulation") {
+        if (seen_simulation) fail(e->GetLineNum(), "more than one <simulation>");
+        seen_simulation = true;
+        read_simulation(e, s);
+      } else if (tag == "component") {
+        read_component(e, s);
+      } else if (tag == "connection") {
+        check_attributes(e, {"from", "to", "delay"});
+        connection_spec c;
+        c.from = required(e, "from");
+        c.to = required(e, "to");
+        c.delayed = boolean(e, "delay", false);
+        c.where = at(e);
+        s.connections.push_back(std::move(c));
+      } else if (tag == "record") {
+        if (seen_record) fail(e->GetLineNum(), "more than one <record>");
+        seen_record = true;
+        read_record(e, s.record);
+      } else {
+        fail(e->GetLineNum(), "unknown element <" + std::string(tag) +
+                                  "> (expected simulation, component, connection or record)");
+      }
+    }
+    if (s.components.empty()) fail(root->GetLineNum(), "the system has no <component>");
+    return s;
+  }
+
+  void read_simulation(const tinyxml2::XMLElement* e, system_structure& s) const {
+    check_attributes(e, {"start", "stop", "step", "algorithm"});
+    if (e->Attribute("start")) s.start = time_point(seconds(e, "start"));
+    if (e->Attribute("stop")) s.stop = time_point(seconds(e, "stop"));
+    if (e->Attribute("step")) {
+      s.base_step = seconds(e, "step");
+      if (*s.base_step <= duration::zero()) fail(e->GetLineNum(), "step must be positive");
+    }
+    if (const auto a = attribute(e, "algorithm")) {
+      if (*a == "gauss-seidel") {
+        s.algorithm = algorithm_kind::gauss_seidel;
+      } else if (*a == "jacobi") {
+        s.algorithm = algorithm_kind::jacobi;
+      } else {
+        fail(e->GetLineNum(), "algorithm \"" + *a + "\" is not gauss-seidel or jacobi");
+      }
+    }
+  }
+
+  void read_component(const tinyxml2::XMLElement* e, system_structure& s) const {
+    check_attributes(e, {"name", "fmu", "step_multiple"});
+    component_spec c;
+    c.name = required(e, "name");
+    if (c.name.find_first_of(". \t*?[]") != std::string::npos) {
+      fail(e->GetLineNum(),
+           "component name \"" + c.name + "\" must not contain '.', blanks, '*', '?' or brackets");
+    }
+    for (const auto& other : s.components) {
+      if (other.name == c.name) {
+        fail(e->GetLineNum(),
+             "duplicate component name \"" + c.name + "\" (first at " + other.where.str() + ")");
+      }
+    }
+    c.fmu = required(e, "fmu");
+    if (const char* m = e->Attribute("step_multiple")) {
+      const std::string_view text(m);
+      int value = 0;
+      auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+      if (ec != std::errc() || end != text.data() + text.size() || value < 1) {
+        fail(e->GetLineNum(),
+             "step_multiple=\"" + std::string(text) + "\" is not a positive integer");
+      }
+      c.step_multiple = value;
+    }
+    c.where = at(e);
+    for (auto* p = e->FirstChildElement(); p != nullptr; p = p->NextSiblingElement()) {
+      if (std::string_view(p->Name()) != "parameter") {
+        fail(p->GetLineNum(), "unknown element <" + std::string(p->Name()) +
+                                  "> in <component> (expected parameter)");
+      }
+      check_attributes(p, {"name", "value"});
+      parameter_setting setting;
+      setting.variable = required(p, "name");
+      const char* value = p->Attribute("value");
+      if (value == nullptr) fail(p->GetLineNum(), "<parameter> needs a value attribute");
+      setting.value = value;
+      setting.where = at(p);
+      for (const auto& other : c.parameters) {
+        if (other.variable == setting.variable) {
+          fail(p->GetLineNum(), "parameter \"" + setting.variable + "\" set twice (first at " +
+                                    other.where.str() + ")");
+        }
+      }
+      c.parameters.push_back(std::move(setting));
+    }
+    s.components.push_back(std::move(c));
+  }
+
+  void read_record(const tinyxml2::XMLElement* e, record_spec& r) const {
+    check_attributes(e, {"enabled", "interval", "file"});
+    r.where = at(e);
+    r.enabled = boolean(e, "enabled", true);
+    if (e->Attribute("interval")) r.interval = seconds(e, "interval");
+    if (const auto f = attribute(e, "file")) {
+      const fs::path p(*f);
+      if (f->empty() || p.is_absolute() || *p.lexically_normal().begin() == "..") {
+        fail(e->GetLineNum(),
+             "file=\"" + *f + "\" must be a relative path inside the output folder");
+      }
+      r.file = *f;
+    }
+    for (auto* sig = e->FirstChildElement(); sig != nullptr; sig = sig->NextSiblingElement()) {
+      if (std::string_view(sig->Name()) != "signal") {
+        fail(sig->GetLineNum(),
+             "unknown element <" + std::string(sig->Name()) + "> in <record> (expected signal)");
+      }
+      check_attributes(sig, {"name"});
+      r.signals.push_back(required(sig, "name"));
+      r.signal_locations.push_back(at(sig));
+    }
+  }
+
+ private:
+  std::string file_;
+};
+
+}  // namespace
+
+system_structure parse_system_text(std::string_view xml, const fs::path& file) {
+  tinyxml2::XMLDocument doc;
+  doc.Parse(xml.data(), xml.size());
+  return system_reader(file.string()).read(doc, file);
+}
+
+system_structure parse_system_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw validation_error(file.string() + ": cannot open the system file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_system_text(text.str(), file);
+}
+
+std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
+  tinyxml2::XMLDocument doc;
+  doc.InsertEndChild(doc.NewDeclaration());
+  auto* root = doc.NewElement("system");
+  doc.InsertEndChild(root);
+  root->SetAttribute("name", s.name.c_str());
+  if (!s.description.empty()) root->SetAttribute("description", s.description.c_str());
+  auto* sim = root->InsertNewChildElement("simulation");
+  sim->SetAttribute("start", format_seconds(s.start).c_str());
+  if (s.stop) sim->SetAttribute("stop", format_seconds(*s.stop).c_str());
+  if (s.base_step) sim->SetAttribute("step", format_seconds(*s.base_step).c_str());
+  sim->SetAttribute("algorithm", std::string(to_string(s.algorithm)).c_str());
+  for (const auto& c : s.components) {
+    auto* e = root->InsertNewChildElement("component");
+    e->SetAttribute("name", c.name.c_str());
+    std::string fmu_ref = c.fmu;
+    const bool bundled = fmu_ref.find('/') == std::string::npos &&
+                         !(fmu_ref.size() > 4 && fmu_ref.ends_with(".fmu"));
+    if (absolute_fmu_paths && !bundled && fs::path(fmu_ref).is_relative()) {
+      fmu_ref = fs::absolute(s.base_dir / fmu_ref).lexically_normal().string();
+    }
+    e->SetAttribute("fmu", fmu_ref.c_str());
+    if (c.step_multiple != 1) e->SetAttribute("step_multiple", c.step_multiple);
+    for (const auto& p : c.parameters) {
+      auto* pe = e->InsertNewChildElement("parameter");
+      pe->SetAttribute("name", p.variable.c_str());
+      pe->SetAttribute("value", p.value.c_str());
+    }
+  }
+  for (const auto& c : s.connections) {
+    auto* e = root->InsertNewChildElement("connection");
+    e->SetAttribute("from", c.from.c_str());
+    e->SetAttribute("to", c.to.c_str());
+    if (c.delayed) e->SetAttribute("delay", "true");
+  }
+  auto* rec = root->InsertNewChildElement("record");
+  if (!s.record.enabled) rec->SetAttribute("enabled", "false");
+  if (s.record.interval) rec->SetAttribute("interval", format_seconds(*s.record.interval).c_str());
+  rec->SetAttribute("file", s.record.file.c_str());
+  for (const auto& sig : s.record.signals) {
+    rec->InsertNewChildElement("signal")->SetAttribute("name", sig.c_str());
+  }
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
+  return printer.CStr();
+}
+
+}  // namespace stride::cosim

@@ -1,0 +1,59 @@
+// Small tinyxml2 helpers shared by the modelDescription and system XML readers.
+#ifndef STRIDE_COSIM_SRC_XML_UTIL_HPP
+#define STRIDE_COSIM_SRC_XML_UTIL_HPP
+
+#include <tinyxml2.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace stride::cosim::detail {
+
+/// The attribute's text, or nullopt.
+inline std::optional<std::string> attribute(const tinyxml2::XMLElement* e, const char* name) {
+  const char* v = e->Attribute(name);
+  if (v == nullptr) return std::nullopt;
+  return std::string(v);
+}
+
+/// The attribute's text, or `fallback`.
+inline std::string attribute_or(const tinyxml2::XMLElement* e, const char* name,
+                                std::string fallback = {}) {
+  const char* v = e->Attribute(name);
+  return v != nullptr ? std::string(v) : std::move(fallback);
+}
+
+/// A short description of a tinyxml2 parse error: "mismatched element (XMLElement
+/// name=parameter)".
+inline std::string describe_error(const tinyxml2::XMLDocument& doc) {
+  std::string name = doc.ErrorName() ? doc.ErrorName() : "error";
+  if (name.rfind("XML_ERROR_", 0) == 0) name = name.substr(10);
+  if (name.rfind("XML_", 0) == 0) name = name.substr(4);
+  for (char& c : name)
+    c = c == '_' ? ' ' : static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  const std::string full = doc.ErrorStr() ? doc.ErrorStr() : "";
+  const auto line = full.find("Line number=");
+  const auto detail = line == std::string::npos ? std::string::npos : full.find(": ", line);
+  if (detail != std::string::npos && detail + 2 < full.size()) {
+    name += " (" + full.substr(detail + 2) + ")";
+  }
+  return name;
+}
+
+/// Trims blanks at both ends.
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() &&
+         (s.front() == ' ' || s.front() == '\t' || s.front() == '\n' || s.front() == '\r')) {
+    s.remove_prefix(1);
+  }
+  while (!s.empty() &&
+         (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r')) {
+    s.remove_suffix(1);
+  }
+  return s;
+}
+
+}  // namespace stride::cosim::detail
+
+#endif  // STRIDE_COSIM_SRC_XML_UTIL_HPP

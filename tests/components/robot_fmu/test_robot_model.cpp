@@ -1,0 +1,206 @@
+// URDF loading: the DARwIn-OP model, small test models, malformed and unsupported files.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "stride/robot/robot_model.hpp"
+
+namespace {
+
+using stride::robot::load_robot_model;
+using stride::robot::model_error;
+using stride::robot::parse_robot_model;
+using stride::robot::robot_model;
+using stride::robot::shape_type;
+using testing::HasSubstr;
+
+const std::string k_data = STRIDE_TEST_DATA_DIR;
+const std::string k_darwin = std::string(STRIDE_SOURCE_DIR) + "/models/darwin-op/darwin-op.urdf";
+
+// the message of the model_error thrown by `f`
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const model_error& e) {
+    return e.what();
+  }
+  return "<no model_error>";
+}
+
+std::string robot(const std::string& body) {
+  return "<?xml version=\"1.0\"?><robot name=\"t\">" + body + "</robot>";
+}
+
+const std::string k_inertial =
+    "<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" "
+    "iyz=\"0\" izz=\"0.01\"/></inertial>";
+
+TEST(robot_model, darwin_has_the_fact_sheet_structure) {
+  const robot_model m = load_robot_model(k_darwin);
+  EXPECT_EQ(m.name, "darwin-op");
+  EXPECT_FALSE(m.fixed_base);
+  ASSERT_EQ(m.bodies.size(), 21u);  // imu_link is merged into base_link
+  ASSERT_EQ(m.joints.size(), 20u);
+  EXPECT_EQ(m.servo_count(), 20);
+  EXPECT_NEAR(m.total_mass(), 2.9253, 5e-4);  // fact sheet 1.5
+  EXPECT_EQ(m.bodies[0].link, "base_link");
+  // servo IDs from the <servo> extension, fact sheet 1.3
+  const char* names[20] = {"r_sho_pitch", "l_sho_pitch", "r_sho_roll", "l_sho_roll", "r_el",
+                           "l_el",        "r_hip_yaw",   "l_hip_yaw",  "r_hip_roll", "l_hip_roll",
+                           "r_hip_pitch", "l_hip_pitch", "r_knee",     "l_knee",     "r_ank_pitch",
+                           "l_ank_pitch", "r_ank_roll",  "l_ank_roll", "head_pan",   "head_tilt"};
+  for (int id = 1; id <= 20; ++id) {
+    const int j = m.joint_of_servo(id);
+    ASSERT_GE(j, 0) << id;
+    EXPECT_EQ(m.joints[static_cast<std::size_t>(j)].name, names[id - 1]);
+    EXPECT_TRUE(m.joints[static_cast<std::size_t>(j)].limited);
+  }
+  // the IMU frame rides on the torso at the accelerometer position
+  const int imu = m.find_link("imu_link");
+  ASSERT_GE(imu, 0);
+  EXPECT_EQ(m.links[static_cast<std::size_t>(imu)].body, 0);
+  EXPECT_DOUBLE_EQ(m.links[static_cast<std::size_t>(imu)].in_body.position[2], -0.068);
+  // the head is a capsule (extension), the soles are boxes
+  const int head = m.find_link("head_tilt_link");
+  ASSERT_GE(head, 0);
+  const auto& head_body =
+      m.bodies[static_cast<std::size_t>(m.links[static_cast<std::size_t>(head)].body)];
+  ASSERT_EQ(head_body.shapes.size(), 1u);
+  EXPECT_EQ(head_body.shapes[0].type, shape_type::capsule);
+  EXPECT_DOUBLE_EQ(head_body.shapes[0].size[0], 0.042);
+  const int sole = m.find_link("l_ank_roll_link");
+  const auto& foot =
+      m.bodies[static_cast<std::size_t>(m.links[static_cast<std::size_t>(sole)].body)];
+  ASSERT_EQ(foot.shapes.size(), 1u);
+  EXPECT_EQ(foot.shapes[0].type, shape_type::box);
+  EXPECT_DOUBLE_EQ(foot.shapes[0].size[0], 0.105);
+}
+
+TEST(robot_model, fixed_joints_merge_mass_properties) {
+  const robot_model m = load_robot_model(k_data + "/pendulum.urdf");
+  EXPECT_TRUE(m.fixed_base);
+  ASSERT_EQ(m.bodies.size(), 1u);  // rod + bob
+  ASSERT_EQ(m.joints.size(), 1u);
+  EXPECT_EQ(m.joints[0].parent_body, -1);
+  EXPECT_EQ(m.joints[0].servo_id, 0);
+  const auto& b = m.bodies[0];
+  EXPECT_DOUBLE_EQ(b.mass, 1.0);
+  // CoM: (0.4 * -0.2 + 0.6 * -0.4) / 1.0
+  EXPECT_NEAR(b.com[2], -0.32, 1e-12);
+  // parallel axis: rod 0.005347 + 0.4 * 0.12^2, bob 0.00024 + 0.6 * 0.08^2
+  EXPECT_NEAR(b.inertia[1], 0.005347 + 0.4 * 0.0144 + 0.00024 + 0.6 * 0.0064, 1e-12);
+  EXPECT_EQ(b.shapes.size(), 2u);
+  // the bob's sphere moved into the rod's frame
+  EXPECT_EQ(b.shapes[1].type, shape_type::sphere);
+  EXPECT_DOUBLE_EQ(b.shapes[1].origin.position[2], -0.4);
+  const int bob = m.find_link("bob");
+  ASSERT_GE(bob, 0);
+  EXPECT_EQ(m.links[static_cast<std::size_t>(bob)].body, 0);
+}
+
+TEST(robot_model, servo_ids_may_have_gaps_and_joints_may_slide) {
+  const robot_model m = load_robot_model(k_data + "/arm.urdf");
+  EXPECT_EQ(m.servo_count(), 3);
+  EXPECT_EQ(m.joint_of_servo(2), -1);
+  ASSERT_GE(m.joint_of_servo(3), 0);
+  EXPECT_EQ(m.joints[static_cast<std::size_t>(m.joint_of_servo(3))].type,
+            stride::robot::joint_type::prismatic);
+}
+
+TEST(robot_model, weld_joint_merges_the_child_body) {
+  robot_model m = load_robot_model(k_darwin);
+  const double mass = m.total_mass();
+  const int elbow = m.joint_of_servo(5);
+  stride::robot::weld_joint(m, elbow, 0.5);
+  EXPECT_EQ(m.bodies.size(), 20u);
+  EXPECT_EQ(m.joints.size(), 19u);
+  EXPECT_EQ(m.joint_of_servo(5), -1);
+  EXPECT_NEAR(m.total_mass(), mass, 1e-12);
+  const int forearm = m.find_link("r_el_link");
+  const int upper_arm = m.find_link("r_sho_roll_link");
+  EXPECT_EQ(m.links[static_cast<std::size_t>(forearm)].body,
+            m.links[static_cast<std::size_t>(upper_arm)].body);
+  // every joint still refers to a body that exists, parents before children
+  for (const auto& j : m.joints) {
+    EXPECT_LT(j.parent_body, j.child_body);
+    EXPECT_LT(j.child_body, static_cast<int>(m.bodies.size()));
+  }
+}
+
+TEST(robot_model, missing_file_is_named) {
+  const std::string msg = error_of([] { load_robot_model(k_data + "/does_not_exist.urdf"); });
+  EXPECT_THAT(msg, HasSubstr("does_not_exist.urdf"));
+  EXPECT_THAT(msg, HasSubstr("cannot open"));
+}
+
+TEST(robot_model, malformed_xml_reports_the_parser_message_and_file) {
+  const std::string msg = error_of([] { load_robot_model(k_data + "/malformed.urdf"); });
+  EXPECT_THAT(msg, HasSubstr("malformed.urdf"));
+  EXPECT_THAT(msg, HasSubstr("XML error"));
+  EXPECT_THAT(msg, HasSubstr("Line number"));  // tinyxml2 names the line
+}
+
+TEST(robot_model, urdfdom_errors_are_captured_into_the_message) {
+  const std::string msg = error_of([] { load_robot_model(k_data + "/missing_link.urdf"); });
+  EXPECT_THAT(msg, HasSubstr("missing_link.urdf"));
+  EXPECT_THAT(msg, HasSubstr("ghost"));  // urdfdom's own message names the missing link
+}
+
+TEST(robot_model, unsupported_content_names_the_element) {
+  EXPECT_THAT(error_of([] { load_robot_model(k_data + "/mesh_collision.urdf"); }),
+              HasSubstr("link 'base': mesh collision geometry is not supported"));
+  EXPECT_THAT(error_of([] { load_robot_model(k_data + "/mimic.urdf"); }),
+              HasSubstr("joint 'grip_b': <mimic> joints are not supported"));
+  const std::string floating =
+      robot("<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" + k_inertial +
+            "</link><joint name=\"free\" type=\"floating\"><parent "
+            "link=\"a\"/><child link=\"b\"/></joint>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(floating, "mem.urdf"); }),
+              HasSubstr("mem.urdf: joint 'free': floating joints are not supported"));
+  const std::string planar =
+      robot("<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" + k_inertial +
+            "</link><joint name=\"slide2d\" type=\"planar\"><parent "
+            "link=\"a\"/><child link=\"b\"/><axis xyz=\"0 0 1\"/></joint>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(planar, "mem.urdf"); }),
+              HasSubstr("joint 'slide2d': planar joints are not supported"));
+}
+
+TEST(robot_model, physically_impossible_models_are_rejected) {
+  // a moving link without mass
+  const std::string massless = robot("<link name=\"a\">" + k_inertial +
+                                     "</link><link name=\"b\"/><joint name=\"j\" "
+                                     "type=\"continuous\"><parent link=\"a\"/><child "
+                                     "link=\"b\"/><axis xyz=\"0 0 1\"/></joint>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(massless, "m.urdf"); }),
+              HasSubstr("link 'b' has no mass"));
+  // inertia violating the triangle inequality
+  const std::string bad_inertia = robot(
+      "<link name=\"a\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" "
+      "iyy=\"1\" iyz=\"0\" izz=\"3\"/></inertial></link>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(bad_inertia, "m.urdf"); }),
+              HasSubstr("link 'a': principal moments violate the triangle inequality"));
+  // duplicate servo ID
+  const std::string twice =
+      robot("<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" + k_inertial +
+            "</link><link name=\"c\">" + k_inertial +
+            "</link><joint name=\"j1\" type=\"continuous\"><servo id=\"4\"/><parent "
+            "link=\"a\"/><child link=\"b\"/></joint><joint name=\"j2\" "
+            "type=\"continuous\"><servo id=\"4\"/><parent link=\"a\"/><child "
+            "link=\"c\"/></joint>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(twice, "m.urdf"); }),
+              HasSubstr("joint 'j2': servo id 4 is already used by joint 'j1'"));
+  const std::string bad_id =
+      robot("<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" + k_inertial +
+            "</link><joint name=\"j1\" type=\"continuous\"><servo id=\"two\"/><parent "
+            "link=\"a\"/><child link=\"b\"/></joint>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(bad_id, "m.urdf"); }),
+              HasSubstr("joint 'j1': servo id 'two' is not an integer"));
+  const std::string no_robot = "<?xml version=\"1.0\"?><model/>";
+  EXPECT_THAT(error_of([&] { parse_robot_model(no_robot, "m.urdf"); }),
+              HasSubstr("no <robot> root element"));
+}
+
+}  // namespace

@@ -1,0 +1,172 @@
+// robot_sim on small test models: pendulum period, servo limits, joint signs, step rule, errors.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "stride/robot/robot_sim.hpp"
+
+namespace {
+
+using stride::robot::robot_config;
+using stride::robot::robot_sim;
+
+const std::string k_data = STRIDE_TEST_DATA_DIR;
+
+robot_config config_for(const std::string& file) {
+  robot_config c;
+  c.urdf_path = k_data + "/" + file;
+  return c;
+}
+
+TEST(robot_sim, pendulum_swings_with_the_compound_pendulum_period) {
+  robot_config c = config_for("pendulum.urdf");
+  c.physics_step = 0.001;
+  robot_sim sim(c);
+  const auto& body = sim.model().bodies[0];
+  const double d = -body.com[2];                               // pivot to CoM
+  const double i_pivot = body.inertia[1] + body.mass * d * d;  // about the pivot axis y
+  const double expected = 2.0 * std::numbers::pi * std::sqrt(i_pivot / (body.mass * 9.81 * d));
+
+  // a short horizontal kick, then free swinging; the fixed-base "pitch" is the pendulum angle
+  sim.set_push(2.0, 0.0);
+  sim.step(0.02);
+  sim.set_push(0.0, 0.0);
+  std::vector<double> crossings;
+  double last = sim.outputs().pitch;
+  double amplitude = 0.0;
+  while (sim.outputs().time < 6.0) {
+    sim.step(0.001);
+    const double now = sim.outputs().pitch;
+    amplitude = std::max(amplitude, std::abs(now));
+    if ((last < 0.0) != (now < 0.0)) {
+      // linear interpolation of the zero crossing
+      crossings.push_back(sim.outputs().time - 0.001 * now / (now - last));
+    }
+    last = now;
+  }
+  ASSERT_GE(crossings.size(), 8u);
+  EXPECT_GT(amplitude, 0.01);
+  EXPECT_LT(amplitude, 0.2);  // small-angle regime
+  const double period =
+      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  EXPECT_NEAR(period, expected, 0.005 * expected);
+  EXPECT_FALSE(sim.outputs().fallen);  // fixed-base models never fall
+}
+
+TEST(robot_sim, servo_holds_within_its_torque_limit_and_sags_beyond_it) {
+  // the arm needs 4.9 N·m to stay horizontal
+  robot_config strong = config_for("arm.urdf");
+  strong.servo.torque_limit = 10.0;
+  robot_sim a(strong);
+  ASSERT_EQ(a.servo_count(), 3);
+  const std::vector<double> level = {0.0, 0.0, 0.0};
+  a.set_joint_targets(level);
+  a.step(2.0);
+  EXPECT_NEAR(a.outputs().joint_angles[0], 0.0, 1e-3);
+
+  robot_config weak = config_for("arm.urdf");  // default 2.5 N·m
+  weak.servo.damping = 0.5;                    // settle the swing within the test
+  robot_sim b(weak);
+  b.set_joint_targets(level);
+  b.step(4.0);
+  // static balance: motor at its limit against gravity, m·g·r·cos(q) = 2.5 N·m
+  double moment = 0.0;  // Σ m·x of the arm bodies, kg·m
+  moment += b.model().bodies[0].mass * b.model().bodies[0].com[0];
+  moment += b.model().bodies[1].mass * (0.5 + b.model().bodies[1].com[0]);
+  const double expected = -std::acos(2.5 / (moment * 9.81));
+  EXPECT_NEAR(b.outputs().joint_angles[0], expected, 0.03);
+}
+
+TEST(robot_sim, positive_joint_positions_follow_the_urdf_axis) {
+  robot_config c = config_for("arm.urdf");
+  c.servo.torque_limit = 10.0;
+  robot_sim sim(c);
+  const double com_z0 = sim.outputs().com[2];
+  const double com_x0 = sim.outputs().com[0];
+  // +0.5 rad about (0, -1, 0) lifts the arm; +0.05 m along the arm extends it
+  const std::vector<double> targets = {0.5, 0.0, 0.05};
+  sim.set_joint_targets(targets);
+  sim.step(2.0);
+  EXPECT_NEAR(sim.outputs().joint_angles[0], 0.5, 2e-3);
+  EXPECT_NEAR(sim.outputs().joint_angles[2], 0.05, 1e-3);
+  EXPECT_EQ(sim.outputs().joint_angles[1], 0.0);  // no servo 2 in this model
+  EXPECT_GT(sim.outputs().com[2], com_z0 + 0.2);
+  // targets beyond the limits are clamped to them (URDF: shoulder <= 2.0, wrist <= 0.1)
+  const std::vector<double> beyond = {3.0, 0.0, 0.5};
+  sim.set_joint_targets(beyond);
+  sim.step(2.0);
+  EXPECT_NEAR(sim.outputs().joint_angles[0], 2.0, 0.01);
+  EXPECT_NEAR(sim.outputs().joint_angles[2], 0.1, 2e-3);
+  EXPECT_NE(com_x0, sim.outputs().com[0]);
+}
+
+TEST(robot_sim, servo_velocity_is_limited) {
+  robot_config c = config_for("arm.urdf");
+  c.servo.torque_limit = 50.0;
+  c.servo.max_velocity = 1.0;
+  c.servo.max_acceleration = 0.0;
+  robot_sim sim(c);
+  const std::vector<double> targets = {1.5, 0.0, 0.0};
+  sim.set_joint_targets(targets);
+  sim.step(0.5);
+  // 0.5 s at 1 rad/s
+  EXPECT_NEAR(sim.outputs().joint_angles[0], 0.5, 0.02);
+  EXPECT_LE(std::abs(sim.outputs().joint_velocities[0]), 1.0 + 1e-6);
+}
+
+TEST(robot_sim, step_runs_whole_physics_steps_and_carries_the_remainder) {
+  robot_config c = config_for("pendulum.urdf");
+  c.physics_step = 0.008;
+  robot_sim sim(c);
+  sim.step(0.005);
+  EXPECT_EQ(sim.outputs().time, 0.0);
+  sim.step(0.005);  // 10 ms requested: one step
+  EXPECT_DOUBLE_EQ(sim.outputs().time, 0.008);
+  sim.step(0.006);  // 16 ms requested: two steps
+  EXPECT_DOUBLE_EQ(sim.outputs().time, 0.016);
+  for (int k = 0; k < 1000; ++k) sim.step(0.004);  // 4.016 s: exactly 502 steps
+  EXPECT_DOUBLE_EQ(sim.outputs().time, 502 * 0.008);
+  EXPECT_THROW(sim.step(-0.001), std::invalid_argument);
+}
+
+TEST(robot_sim, bad_settings_name_the_key) {
+  auto message = [](robot_config c) -> std::string {
+    try {
+      robot_sim sim(std::move(c));
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "<no error>";
+  };
+  robot_config c = config_for("arm.urdf");
+  c.physics_step = 0.0;
+  EXPECT_THAT(message(c), testing::HasSubstr("robot_config.physics_step"));
+  c = config_for("arm.urdf");
+  c.initial_pose = {0.1};
+  EXPECT_THAT(message(c), testing::HasSubstr("robot_config.initial_pose: needs 3 values"));
+  c = config_for("arm.urdf");
+  c.imu_link = "no_such_link";
+  EXPECT_THAT(message(c), testing::HasSubstr("robot_config.imu_link: link 'no_such_link'"));
+  c = config_for("arm.urdf");
+  c.rigid_servos = {2};
+  EXPECT_THAT(message(c), testing::HasSubstr("robot_config.rigid_servos: servo 2"));
+  c = robot_config{};
+  EXPECT_THAT(message(c), testing::HasSubstr("robot URDF path is empty"));
+
+  robot_sim sim(config_for("arm.urdf"));
+  const std::vector<double> wrong_size = {0.0, 0.0};
+  EXPECT_THROW(sim.set_joint_targets(wrong_size), std::invalid_argument);
+  const std::vector<double> nan = {0.0, std::nan(""), 0.0};
+  EXPECT_THROW(sim.set_joint_targets(nan), std::invalid_argument);
+  const std::vector<std::uint8_t> garbage(10, 7);
+  EXPECT_THROW(sim.restore_state(garbage), std::invalid_argument);
+  robot_sim other(config_for("pendulum.urdf"));
+  EXPECT_THROW(sim.restore_state(other.save_state()), std::invalid_argument);
+}
+
+}  // namespace

@@ -1,0 +1,985 @@
+/* fmu_importer: a foreign FMI 2.0 Co-Simulation importer in plain C11.
+ *
+ * It uses no Stride header on purpose: everything it knows about FMI 2.0 is declared below from
+ * the specification, so an FMU that only works with Stride's own declarations fails here.
+ * Dependencies: libc, libdl (dlopen/dlsym) and libzip's C API (unzipping only).
+ *
+ * usage: fmu_importer FILE.fmu [--steps N] [--twice] [--no-compare]
+ *
+ * Unzips the FMU into a fresh mkdtemp directory, reads guid, modelIdentifier, the default
+ * experiment and the Real outputs from modelDescription.xml by plain string parsing, loads
+ * binaries/linux64/<modelIdentifier>.so, resolves all 34 Co-Simulation functions and runs
+ *   GetVersion/GetTypesPlatform -> Instantiate -> SetupExperiment -> Enter/ExitInitializationMode
+ *   -> N x (DoStep, GetReal outputs) -> Terminate -> FreeInstance,
+ * then checks that Instantiate with a wrong GUID returns NULL with a log message and that
+ * functions of undeclared capabilities (FMU state, directional derivatives) return fmi2Error.
+ * --twice runs the lifecycle twice in a row (the second time with a trailing '/' on the
+ * resource URI, as some importers pass it) and two instances side by side in the same process,
+ * comparing all output traces with the first run (--no-compare skips the comparison).
+ * Everything is freed and the temp directory removed, so valgrind sees no leak of ours.
+ * Exit status: 0 on success, 1 on a failed check, 2 on a usage error.
+ */
+#define _XOPEN_SOURCE 700
+
+#include <dlfcn.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <ftw.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zip.h>
+
+/* ---- FMI 2.0 declarations (fmi2TypesPlatform.h / fmi2FunctionTypes.h, "default" platform) */
+typedef void* fmi2Component;
+typedef void* fmi2ComponentEnvironment;
+typedef void* fmi2FMUstate;
+typedef unsigned int fmi2ValueReference;
+typedef double fmi2Real;
+typedef int fmi2Integer;
+typedef int fmi2Boolean;
+typedef char fmi2Char;
+typedef const fmi2Char* fmi2String;
+typedef char fmi2Byte;
+#define fmi2True 1
+#define fmi2False 0
+
+typedef enum { fmi2OK, fmi2Warning, fmi2Discard, fmi2Error, fmi2Fatal, fmi2Pending } fmi2Status;
+typedef enum { fmi2ModelExchange, fmi2CoSimulation } fmi2Type;
+typedef enum {
+  fmi2DoStepStatus,
+  fmi2PendingStatus,
+  fmi2LastSuccessfulTime,
+  fmi2Terminated
+} fmi2StatusKind;
+
+typedef void (*fmi2CallbackLogger)(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String,
+                                   fmi2String, ...);
+typedef void* (*fmi2CallbackAllocateMemory)(size_t, size_t);
+typedef void (*fmi2CallbackFreeMemory)(void*);
+typedef void (*fmi2StepFinished)(fmi2ComponentEnvironment, fmi2Status);
+
+typedef struct {
+  fmi2CallbackLogger logger;
+  fmi2CallbackAllocateMemory allocateMemory;
+  fmi2CallbackFreeMemory freeMemory;
+  fmi2StepFinished stepFinished;
+  fmi2ComponentEnvironment componentEnvironment;
+} fmi2CallbackFunctions;
+
+/* The 34 functions of a Co-Simulation FMU: 25 common + 9 Co-Simulation. */
+typedef struct {
+  const char* (*fmi2GetTypesPlatform)(void);
+  const char* (*fmi2GetVersion)(void);
+  fmi2Status (*fmi2SetDebugLogging)(fmi2Component, fmi2Boolean, size_t, const fmi2String[]);
+  fmi2Component (*fmi2Instantiate)(fmi2String, fmi2Type, fmi2String, fmi2String,
+                                   const fmi2CallbackFunctions*, fmi2Boolean, fmi2Boolean);
+  void (*fmi2FreeInstance)(fmi2Component);
+  fmi2Status (*fmi2SetupExperiment)(fmi2Component, fmi2Boolean, fmi2Real, fmi2Real, fmi2Boolean,
+                                    fmi2Real);
+  fmi2Status (*fmi2EnterInitializationMode)(fmi2Component);
+  fmi2Status (*fmi2ExitInitializationMode)(fmi2Component);
+  fmi2Status (*fmi2Terminate)(fmi2Component);
+  fmi2Status (*fmi2Reset)(fmi2Component);
+  fmi2Status (*fmi2GetReal)(fmi2Component, const fmi2ValueReference[], size_t, fmi2Real[]);
+  fmi2Status (*fmi2GetInteger)(fmi2Component, const fmi2ValueReference[], size_t, fmi2Integer[]);
+  fmi2Status (*fmi2GetBoolean)(fmi2Component, const fmi2ValueReference[], size_t, fmi2Boolean[]);
+  fmi2Status (*fmi2GetString)(fmi2Component, const fmi2ValueReference[], size_t, fmi2String[]);
+  fmi2Status (*fmi2SetReal)(fmi2Component, const fmi2ValueReference[], size_t, const fmi2Real[]);
+  fmi2Status (*fmi2SetInteger)(fmi2Component, const fmi2ValueReference[], size_t,
+                               const fmi2Integer[]);
+  fmi2Status (*fmi2SetBoolean)(fmi2Component, const fmi2ValueReference[], size_t,
+                               const fmi2Boolean[]);
+  fmi2Status (*fmi2SetString)(fmi2Component, const fmi2ValueReference[], size_t,
+                              const fmi2String[]);
+  fmi2Status (*fmi2GetFMUstate)(fmi2Component, fmi2FMUstate*);
+  fmi2Status (*fmi2SetFMUstate)(fmi2Component, fmi2FMUstate);
+  fmi2Status (*fmi2FreeFMUstate)(fmi2Component, fmi2FMUstate*);
+  fmi2Status (*fmi2SerializedFMUstateSize)(fmi2Component, fmi2FMUstate, size_t*);
+  fmi2Status (*fmi2SerializeFMUstate)(fmi2Component, fmi2FMUstate, fmi2Byte[], size_t);
+  fmi2Status (*fmi2DeSerializeFMUstate)(fmi2Component, const fmi2Byte[], size_t, fmi2FMUstate*);
+  fmi2Status (*fmi2GetDirectionalDerivative)(fmi2Component, const fmi2ValueReference[], size_t,
+                                             const fmi2ValueReference[], size_t, const fmi2Real[],
+                                             fmi2Real[]);
+  fmi2Status (*fmi2SetRealInputDerivatives)(fmi2Component, const fmi2ValueReference[], size_t,
+                                            const fmi2Integer[], const fmi2Real[]);
+  fmi2Status (*fmi2GetRealOutputDerivatives)(fmi2Component, const fmi2ValueReference[], size_t,
+                                             const fmi2Integer[], fmi2Real[]);
+  fmi2Status (*fmi2DoStep)(fmi2Component, fmi2Real, fmi2Real, fmi2Boolean);
+  fmi2Status (*fmi2CancelStep)(fmi2Component);
+  fmi2Status (*fmi2GetStatus)(fmi2Component, const fmi2StatusKind, fmi2Status*);
+  fmi2Status (*fmi2GetRealStatus)(fmi2Component, const fmi2StatusKind, fmi2Real*);
+  fmi2Status (*fmi2GetIntegerStatus)(fmi2Component, const fmi2StatusKind, fmi2Integer*);
+  fmi2Status (*fmi2GetBooleanStatus)(fmi2Component, const fmi2StatusKind, fmi2Boolean*);
+  fmi2Status (*fmi2GetStringStatus)(fmi2Component, const fmi2StatusKind, fmi2String*);
+} fmu_functions;
+
+#define FMU_IMPORTER_FUNCTIONS(X) \
+  X(fmi2GetTypesPlatform)         \
+  X(fmi2GetVersion)               \
+  X(fmi2SetDebugLogging)          \
+  X(fmi2Instantiate)              \
+  X(fmi2FreeInstance)             \
+  X(fmi2SetupExperiment)          \
+  X(fmi2EnterInitializationMode)  \
+  X(fmi2ExitInitializationMode)   \
+  X(fmi2Terminate)                \
+  X(fmi2Reset)                    \
+  X(fmi2GetReal)                  \
+  X(fmi2GetInteger)               \
+  X(fmi2GetBoolean)               \
+  X(fmi2GetString)                \
+  X(fmi2SetReal)                  \
+  X(fmi2SetInteger)               \
+  X(fmi2SetBoolean)               \
+  X(fmi2SetString)                \
+  X(fmi2GetFMUstate)              \
+  X(fmi2SetFMUstate)              \
+  X(fmi2FreeFMUstate)             \
+  X(fmi2SerializedFMUstateSize)   \
+  X(fmi2SerializeFMUstate)        \
+  X(fmi2DeSerializeFMUstate)      \
+  X(fmi2GetDirectionalDerivative) \
+  X(fmi2SetRealInputDerivatives)  \
+  X(fmi2GetRealOutputDerivatives) \
+  X(fmi2DoStep)                   \
+  X(fmi2CancelStep)               \
+  X(fmi2GetStatus)                \
+  X(fmi2GetRealStatus)            \
+  X(fmi2GetIntegerStatus)         \
+  X(fmi2GetBooleanStatus)         \
+  X(fmi2GetStringStatus)
+
+/* ---- what the importer reads from modelDescription.xml ---- */
+typedef struct {
+  char* guid;
+  char* model_identifier;
+  double start_time;
+  double step_size;
+  int only_once_per_process;
+  int can_get_and_set_fmu_state;
+  int provides_directional_derivative;
+  fmi2ValueReference* outputs; /* valueReferences of Real outputs */
+  size_t output_count;
+} model_info;
+
+static int g_log_count = 0;
+
+static void importer_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
+                            fmi2String category, fmi2String message, ...) {
+  static const char* const names[] = {"OK", "Warning", "Discard", "Error", "Fatal", "Pending"};
+  const char* status_name = (unsigned)status < 6u ? names[status] : "?";
+  va_list args;
+  (void)env;
+  ++g_log_count;
+  printf("  [fmu log] %s %s (%s): ", instance != NULL ? instance : "(null)", status_name,
+         category != NULL ? category : "");
+  if (message != NULL) {
+    va_start(args, message);
+    vprintf(message, args);
+    va_end(args);
+  }
+  printf("\n");
+  fflush(stdout);
+}
+
+static int fail(const char* format, ...) {
+  va_list args;
+  fflush(stdout);
+  fprintf(stderr, "fmu_importer: error: ");
+  va_start(args, format);
+  vfprintf(stderr, format, args);
+  va_end(args);
+  fprintf(stderr, "\n");
+  return 1;
+}
+
+static const char* status_name(fmi2Status s) {
+  static const char* const names[] = {"fmi2OK",    "fmi2Warning", "fmi2Discard",
+                                      "fmi2Error", "fmi2Fatal",   "fmi2Pending"};
+  return (unsigned)s < 6u ? names[s] : "(invalid status)";
+}
+
+/* fmi2OK and fmi2Warning let the simulation go on; anything else is a failure here. */
+static int check_status(fmi2Status s, const char* call, const char* instance) {
+  if (s == fmi2OK || s == fmi2Warning) return 0;
+  return fail("%s(%s) returned %s", call, instance, status_name(s));
+}
+
+/* ---- temp directory ---- */
+
+static int remove_entry(const char* path, const struct stat* st, int flag, struct FTW* ftw) {
+  (void)st;
+  (void)flag;
+  (void)ftw;
+  if (remove(path) != 0)
+    fprintf(stderr, "fmu_importer: cannot remove %s: %s\n", path, strerror(errno));
+  return 0;
+}
+
+static void remove_tree(const char* dir) {
+  if (dir[0] != '\0') nftw(dir, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+}
+
+/* mkdir -p for the directories of `path` below `root` (the part after root). */
+static int make_parents(char* path, size_t root_length) {
+  char* p = path + root_length + 1;
+  for (; *p != '\0'; ++p) {
+    if (*p != '/') continue;
+    *p = '\0';
+    if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+      int e = errno;
+      *p = '/';
+      return fail("cannot create directory for %s: %s", path, strerror(e));
+    }
+    *p = '/';
+  }
+  return 0;
+}
+
+static int unsafe_entry_name(const char* name) {
+  const char* p = name;
+  if (name[0] == '\0' || name[0] == '/' || strchr(name, '\\') != NULL) return 1;
+  while (*p != '\0') {
+    const char* end = strchr(p, '/');
+    size_t length = end != NULL ? (size_t)(end - p) : strlen(p);
+    if (length == 2 && p[0] == '.' && p[1] == '.') return 1;
+    if (end == NULL) break;
+    p = end + 1;
+  }
+  return 0;
+}
+
+static int unzip_fmu(const char* fmu, const char* dir) {
+  int error_code = 0;
+  zip_t* archive = zip_open(fmu, ZIP_RDONLY, &error_code);
+  zip_int64_t count;
+  zip_int64_t i;
+  int result = 0;
+  char buffer[65536];
+  if (archive == NULL) {
+    zip_error_t error;
+    zip_error_init_with_code(&error, error_code);
+    result = fail("cannot open %s as a ZIP archive: %s", fmu, zip_error_strerror(&error));
+    zip_error_fini(&error);
+    return result;
+  }
+  count = zip_get_num_entries(archive, 0);
+  for (i = 0; i < count && result == 0; ++i) {
+    const char* name = zip_get_name(archive, (zip_uint64_t)i, ZIP_FL_ENC_RAW);
+    zip_uint8_t opsys = 0;
+    zip_uint32_t attributes = 0;
+    char path[PATH_MAX];
+    size_t name_length;
+    if (name == NULL) {
+      result = fail("cannot read entry %lld of %s", (long long)i, fmu);
+      break;
+    }
+    if (unsafe_entry_name(name)) {
+      result = fail("refusing unsafe entry name \"%s\" (absolute, '..' or backslash)", name);
+      break;
+    }
+    if (zip_file_get_external_attributes(archive, (zip_uint64_t)i, 0, &opsys, &attributes) == 0 &&
+        opsys == ZIP_OPSYS_UNIX && S_ISLNK((attributes >> 16) & S_IFMT)) {
+      result = fail("refusing symbolic link entry \"%s\"", name);
+      break;
+    }
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, name) >= sizeof path) {
+      result = fail("entry name too long: %s", name);
+      break;
+    }
+    if (make_parents(path, strlen(dir)) != 0) {
+      result = 1;
+      break;
+    }
+    name_length = strlen(name);
+    if (name[name_length - 1] == '/') {
+      if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+        result = fail("cannot create %s: %s", path, strerror(errno));
+      }
+      continue;
+    }
+    {
+      zip_file_t* in = zip_fopen_index(archive, (zip_uint64_t)i, 0);
+      int out;
+      zip_int64_t n;
+      if (in == NULL) {
+        result = fail("cannot read entry %s: %s", name, zip_strerror(archive));
+        break;
+      }
+      out = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0644);
+      if (out < 0) {
+        result = fail("cannot create %s: %s", path, strerror(errno));
+        zip_fclose(in);
+        break;
+      }
+      while ((n = zip_fread(in, buffer, sizeof buffer)) > 0) {
+        if (write(out, buffer, (size_t)n) != (ssize_t)n) {
+          result = fail("cannot write %s: %s", path, strerror(errno));
+          break;
+        }
+      }
+      if (n < 0) result = fail("cannot decompress %s: %s", name, zip_file_strerror(in));
+      close(out);
+      zip_fclose(in);
+    }
+  }
+  zip_discard(archive);
+  return result;
+}
+
+/* ---- modelDescription.xml by plain string parsing ---- */
+
+static char* read_file(const char* path) {
+  FILE* f = fopen(path, "rb");
+  char* text = NULL;
+  long size;
+  if (f == NULL) return NULL;
+  if (fseek(f, 0, SEEK_END) == 0 && (size = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0) {
+    text = malloc((size_t)size + 1);
+    if (text != NULL) {
+      if (fread(text, 1, (size_t)size, f) != (size_t)size) {
+        free(text);
+        text = NULL;
+      } else {
+        text[size] = '\0';
+      }
+    }
+  }
+  fclose(f);
+  return text;
+}
+
+/* Blanks out comments, so commented-out elements are not seen. */
+static void blank_comments(char* text) {
+  char* p = text;
+  while ((p = strstr(p, "<!--")) != NULL) {
+    char* end = strstr(p + 4, "-->");
+    char* stop = end != NULL ? end + 3 : p + strlen(p);
+    memset(p, ' ', (size_t)(stop - p));
+    p = stop;
+  }
+}
+
+static int is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
+/* Finds the next start tag <name ...>; returns its '<' and sets *end to its '>'. */
+static const char* find_tag(const char* from, const char* name, const char** end) {
+  size_t length = strlen(name);
+  const char* p = from;
+  while ((p = strchr(p, '<')) != NULL) {
+    if (strncmp(p + 1, name, length) == 0 &&
+        (is_space(p[1 + length]) || p[1 + length] == '>' || p[1 + length] == '/')) {
+      const char* q = p + 1 + length;
+      char quote = 0;
+      for (; *q != '\0'; ++q) {
+        if (quote != 0) {
+          if (*q == quote) quote = 0;
+        } else if (*q == '"' || *q == '\'') {
+          quote = *q;
+        } else if (*q == '>') {
+          break;
+        }
+      }
+      if (*q == '\0') return NULL;
+      *end = q;
+      return p;
+    }
+    ++p;
+  }
+  return NULL;
+}
+
+/* Copies the decoded value of attribute `name` of the tag [tag, end) into a malloc'd string. */
+static char* tag_attribute(const char* tag, const char* end, const char* name) {
+  const char* p = tag + 1;
+  size_t name_length = strlen(name);
+  while (p < end && !is_space(*p)) ++p; /* element name */
+  while (p < end) {
+    const char* attr;
+    size_t attr_length;
+    char quote;
+    const char* value;
+    const char* value_end;
+    while (p < end && is_space(*p)) ++p;
+    attr = p;
+    while (p < end && *p != '=' && !is_space(*p) && *p != '/' && *p != '>') ++p;
+    attr_length = (size_t)(p - attr);
+    while (p < end && is_space(*p)) ++p;
+    if (p >= end || *p != '=') {
+      if (attr_length == 0) ++p;
+      continue;
+    }
+    ++p;
+    while (p < end && is_space(*p)) ++p;
+    if (p >= end || (*p != '"' && *p != '\'')) return NULL;
+    quote = *p++;
+    value = p;
+    while (p < end && *p != quote) ++p;
+    if (p >= end) return NULL;
+    value_end = p++;
+    if (attr_length == name_length && strncmp(attr, name, name_length) == 0) {
+      char* out = malloc((size_t)(value_end - value) + 1);
+      char* o = out;
+      const char* v = value;
+      if (out == NULL) return NULL;
+      while (v < value_end) {
+        static const struct {
+          const char* entity;
+          char c;
+        } entities[] = {
+            {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+        size_t k;
+        int decoded = 0;
+        for (k = 0; k < sizeof entities / sizeof entities[0]; ++k) {
+          size_t n = strlen(entities[k].entity);
+          if ((size_t)(value_end - v) >= n && strncmp(v, entities[k].entity, n) == 0) {
+            *o++ = entities[k].c;
+            v += n;
+            decoded = 1;
+            break;
+          }
+        }
+        if (!decoded) *o++ = *v++;
+      }
+      *o = '\0';
+      return out;
+    }
+  }
+  return NULL;
+}
+
+static int attribute_is_true(const char* tag, const char* end, const char* name) {
+  char* value = tag_attribute(tag, end, name);
+  int result = value != NULL && (strcmp(value, "true") == 0 || strcmp(value, "1") == 0);
+  free(value);
+  return result;
+}
+
+static int attribute_double(const char* tag, const char* end, const char* name, double* out) {
+  char* value = tag_attribute(tag, end, name);
+  char* stop = NULL;
+  int result = 0;
+  if (value == NULL) return 0;
+  errno = 0;
+  *out = strtod(value, &stop);
+  if (stop == value || *stop != '\0' || errno != 0) {
+    result = fail("modelDescription.xml: %s=\"%s\" is not a number", name, value);
+  }
+  free(value);
+  return result;
+}
+
+static void free_model_info(model_info* info) {
+  free(info->guid);
+  free(info->model_identifier);
+  free(info->outputs);
+  memset(info, 0, sizeof *info);
+}
+
+static int read_model_description(const char* dir, model_info* info) {
+  char path[PATH_MAX];
+  char* text;
+  const char* tag;
+  const char* end;
+  int result = 0;
+  memset(info, 0, sizeof *info);
+  info->step_size = 0.01;
+  snprintf(path, sizeof path, "%s/modelDescription.xml", dir);
+  text = read_file(path);
+  if (text == NULL) return fail("cannot read modelDescription.xml at the root of the FMU");
+  blank_comments(text);
+
+  tag = find_tag(text, "fmiModelDescription", &end);
+  if (tag == NULL) {
+    result = fail("modelDescription.xml has no <fmiModelDescription>");
+    goto done;
+  }
+  info->guid = tag_attribute(tag, end, "guid");
+  if (info->guid == NULL) {
+    result = fail("modelDescription.xml has no guid");
+    goto done;
+  }
+  tag = find_tag(text, "CoSimulation", &end);
+  if (tag == NULL) {
+    result = fail("modelDescription.xml has no <CoSimulation>");
+    goto done;
+  }
+  info->model_identifier = tag_attribute(tag, end, "modelIdentifier");
+  if (info->model_identifier == NULL || info->model_identifier[0] == '\0' ||
+      strchr(info->model_identifier, '/') != NULL) {
+    result = fail("<CoSimulation> has no usable modelIdentifier");
+    goto done;
+  }
+  info->only_once_per_process = attribute_is_true(tag, end, "canBeInstantiatedOnlyOncePerProcess");
+  info->can_get_and_set_fmu_state = attribute_is_true(tag, end, "canGetAndSetFMUstate");
+  info->provides_directional_derivative =
+      attribute_is_true(tag, end, "providesDirectionalDerivative");
+
+  tag = find_tag(text, "DefaultExperiment", &end);
+  if (tag != NULL) {
+    if (attribute_double(tag, end, "stepSize", &info->step_size) != 0 ||
+        attribute_double(tag, end, "startTime", &info->start_time) != 0) {
+      result = 1;
+      goto done;
+    }
+    if (!(info->step_size > 0.0)) {
+      result = fail("DefaultExperiment stepSize %g is not positive", info->step_size);
+      goto done;
+    }
+  }
+
+  {
+    const char* p = text;
+    size_t capacity = 0;
+    while ((tag = find_tag(p, "ScalarVariable", &end)) != NULL) {
+      char* causality = tag_attribute(tag, end, "causality");
+      char* vr_text = tag_attribute(tag, end, "valueReference");
+      const char* type_end;
+      const char* type = find_tag(end, "Real", &type_end);
+      const char* next_element = strchr(end + 1, '<');
+      int is_real_output = causality != NULL && strcmp(causality, "output") == 0 && type != NULL &&
+                           type == next_element && end[-1] != '/';
+      if (is_real_output) {
+        char* stop = NULL;
+        unsigned long vr;
+        if (vr_text == NULL || vr_text[0] == '\0') {
+          result = fail("an output ScalarVariable has no valueReference");
+        } else {
+          errno = 0;
+          vr = strtoul(vr_text, &stop, 10);
+          if (*stop != '\0' || errno != 0 || vr > 0xFFFFFFFFul || vr_text[0] == '-') {
+            result = fail("valueReference \"%s\" is not an unsigned int", vr_text);
+          } else {
+            if (info->output_count == capacity) {
+              size_t new_capacity = capacity == 0 ? 8 : capacity * 2;
+              fmi2ValueReference* grown =
+                  realloc(info->outputs, new_capacity * sizeof *info->outputs);
+              if (grown == NULL) {
+                result = fail("out of memory");
+              } else {
+                info->outputs = grown;
+                capacity = new_capacity;
+              }
+            }
+            if (result == 0) info->outputs[info->output_count++] = (fmi2ValueReference)vr;
+          }
+        }
+      }
+      free(causality);
+      free(vr_text);
+      if (result != 0) goto done;
+      p = end;
+    }
+  }
+done:
+  free(text);
+  return result;
+}
+
+/* ---- loading the binary ---- */
+
+static int load_functions(const char* so_path, const char* shown_name, void** handle,
+                          fmu_functions* api) {
+  char missing[2048] = "";
+  size_t missing_count = 0;
+  void* symbol;
+  *handle = dlopen(so_path, RTLD_NOW | RTLD_LOCAL);
+  if (*handle == NULL) return fail("cannot load %s: %s", so_path, dlerror());
+  memset(api, 0, sizeof *api);
+  /* POSIX guarantees that a data pointer from dlsym converts to a function pointer. */
+#define FMU_IMPORTER_RESOLVE(name)                                                         \
+  dlerror();                                                                               \
+  symbol = dlsym(*handle, #name);                                                          \
+  if (symbol == NULL) {                                                                    \
+    if (missing_count++ > 0) strncat(missing, ", ", sizeof missing - strlen(missing) - 1); \
+    strncat(missing, #name, sizeof missing - strlen(missing) - 1);                         \
+  } else {                                                                                 \
+    memcpy(&api->name, &symbol, sizeof symbol);                                            \
+  }
+  FMU_IMPORTER_FUNCTIONS(FMU_IMPORTER_RESOLVE)
+#undef FMU_IMPORTER_RESOLVE
+  if (missing_count > 0) {
+    dlclose(*handle);
+    *handle = NULL;
+    return fail("%s does not export %zu of the 34 FMI 2.0 Co-Simulation functions: %s", shown_name,
+                missing_count, missing);
+  }
+  return 0;
+}
+
+/* ---- the simulation runs ---- */
+
+typedef struct {
+  const fmu_functions* api;
+  const model_info* info;
+  const fmi2CallbackFunctions* callbacks;
+  int steps;
+} run_setup;
+
+/* file://<percent-encoded absolute path>/resources[/] */
+static char* resource_uri(const char* dir, int trailing_slash) {
+  static const char hex[] = "0123456789ABCDEF";
+  size_t length = strlen(dir);
+  char* uri = malloc(length * 3 + 32);
+  char* o = uri;
+  size_t i;
+  if (uri == NULL) return NULL;
+  o += sprintf(o, "file://");
+  for (i = 0; i < length; ++i) {
+    unsigned char c = (unsigned char)dir[i];
+    if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '/' ||
+        c == '-' || c == '_' || c == '.' || c == '~') {
+      *o++ = (char)c;
+    } else {
+      *o++ = '%';
+      *o++ = hex[c >> 4];
+      *o++ = hex[c & 15];
+    }
+  }
+  sprintf(o, "/resources%s", trailing_slash ? "/" : "");
+  return uri;
+}
+
+static int read_outputs(const run_setup* s, fmi2Component c, const char* instance, double time,
+                        double* values) {
+  size_t i;
+  if (s->info->output_count == 0) return 0;
+  if (check_status(s->api->fmi2GetReal(c, s->info->outputs, s->info->output_count, values),
+                   "fmi2GetReal", instance) != 0) {
+    return 1;
+  }
+  for (i = 0; i < s->info->output_count; ++i) {
+    if (isnan(values[i])) {
+      return fail("%s: output valueReference %u is NaN at t=%g", instance, s->info->outputs[i],
+                  time);
+    }
+  }
+  return 0;
+}
+
+static fmi2Component instantiate(const run_setup* s, const char* instance, const char* uri) {
+  fmi2Component c = s->api->fmi2Instantiate(instance, fmi2CoSimulation, s->info->guid, uri,
+                                            s->callbacks, fmi2False, fmi2False);
+  if (c == NULL) fail("fmi2Instantiate(%s, \"%s\") returned NULL", instance, uri);
+  return c;
+}
+
+static int initialize(const run_setup* s, fmi2Component c, const char* instance) {
+  return check_status(
+             s->api->fmi2SetupExperiment(c, fmi2False, 0.0, s->info->start_time, fmi2False, 0.0),
+             "fmi2SetupExperiment", instance) ||
+         check_status(s->api->fmi2EnterInitializationMode(c), "fmi2EnterInitializationMode",
+                      instance) ||
+         check_status(s->api->fmi2ExitInitializationMode(c), "fmi2ExitInitializationMode",
+                      instance);
+}
+
+static double time_at(const run_setup* s, int step) {
+  return s->info->start_time + step * s->info->step_size;
+}
+
+static int do_step(const run_setup* s, fmi2Component c, const char* instance, int step,
+                   double* values) {
+  return check_status(s->api->fmi2DoStep(c, time_at(s, step), s->info->step_size, fmi2True),
+                      "fmi2DoStep", instance) ||
+         read_outputs(s, c, instance, time_at(s, step + 1), values);
+}
+
+static int finish(const run_setup* s, fmi2Component c, const char* instance) {
+  int result = check_status(s->api->fmi2Terminate(c), "fmi2Terminate", instance);
+  s->api->fmi2FreeInstance(c);
+  return result;
+}
+
+/* One full lifecycle; `trace` receives (steps + 1) x outputs values. */
+static int run_lifecycle(const run_setup* s, const char* instance, const char* uri, double* trace) {
+  size_t n = s->info->output_count;
+  int step;
+  fmi2Component c = instantiate(s, instance, uri);
+  if (c == NULL) return 1;
+  if (initialize(s, c, instance) != 0 || read_outputs(s, c, instance, time_at(s, 0), trace) != 0) {
+    s->api->fmi2FreeInstance(c);
+    return 1;
+  }
+  for (step = 0; step < s->steps; ++step) {
+    if (do_step(s, c, instance, step, trace + (size_t)(step + 1) * n) != 0) {
+      s->api->fmi2FreeInstance(c);
+      return 1;
+    }
+  }
+  return finish(s, c, instance);
+}
+
+static int compare_traces(const run_setup* s, const double* expected, const double* actual,
+                          const char* what) {
+  size_t n = s->info->output_count;
+  size_t i;
+  for (i = 0; i < (size_t)(s->steps + 1) * n; ++i) {
+    if (expected[i] != actual[i]) {
+      return fail(
+          "%s: output valueReference %u at t=%g is %.17g, the first run gave %.17g "
+          "(state shared between instances or runs?)",
+          what, s->info->outputs[i % n], time_at(s, (int)(i / n)), actual[i], expected[i]);
+    }
+  }
+  return 0;
+}
+
+/* Two instances stepped alternately in one process. */
+static int run_side_by_side(const run_setup* s, const char* uri, double* trace_a, double* trace_b) {
+  size_t n = s->info->output_count;
+  int step;
+  int result = 0;
+  fmi2Component a = instantiate(s, "instance_a", uri);
+  fmi2Component b = a != NULL ? instantiate(s, "instance_b", uri) : NULL;
+  if (a == NULL || b == NULL) {
+    if (a != NULL) s->api->fmi2FreeInstance(a);
+    return 1;
+  }
+  if (a == b) {
+    result = fail("fmi2Instantiate returned the same component for two instances");
+    s->api->fmi2FreeInstance(a);
+    return result;
+  }
+  result = initialize(s, a, "instance_a") || initialize(s, b, "instance_b") ||
+           read_outputs(s, a, "instance_a", time_at(s, 0), trace_a) ||
+           read_outputs(s, b, "instance_b", time_at(s, 0), trace_b);
+  for (step = 0; step < s->steps && result == 0; ++step) {
+    result = do_step(s, a, "instance_a", step, trace_a + (size_t)(step + 1) * n) ||
+             do_step(s, b, "instance_b", step, trace_b + (size_t)(step + 1) * n);
+  }
+  if (result != 0) {
+    s->api->fmi2FreeInstance(a);
+    s->api->fmi2FreeInstance(b);
+    return 1;
+  }
+  /* b must survive a's end untouched */
+  result = finish(s, a, "instance_a");
+  if (result == 0 && n > 0) {
+    double* again = malloc(n * sizeof *again);
+    if (again == NULL) {
+      result = fail("out of memory");
+    } else {
+      result = read_outputs(s, b, "instance_b", time_at(s, s->steps), again);
+      if (result == 0 && memcmp(again, trace_b + (size_t)s->steps * n, n * sizeof *again) != 0) {
+        result = fail("instance_b's outputs changed when instance_a was freed");
+      }
+      free(again);
+    }
+  }
+  if (result != 0) {
+    s->api->fmi2FreeInstance(b);
+    return 1;
+  }
+  return finish(s, b, "instance_b");
+}
+
+static int check_wrong_guid(const run_setup* s, const char* uri) {
+  int logs_before = g_log_count;
+  fmi2Component c = s->api->fmi2Instantiate("wrong_guid", fmi2CoSimulation,
+                                            "{00000000-0000-0000-0000-000000000000}-wrong", uri,
+                                            s->callbacks, fmi2False, fmi2False);
+  if (c != NULL) {
+    s->api->fmi2FreeInstance(c);
+    return fail("fmi2Instantiate accepted a wrong GUID (the binary must compare it with \"%s\")",
+                s->info->guid);
+  }
+  if (g_log_count == logs_before) {
+    return fail("fmi2Instantiate rejected a wrong GUID without a log message");
+  }
+  return 0;
+}
+
+/* Functions of capabilities the FMU does not declare must exist and return fmi2Error. They are
+ * probed after initialization (state stepComplete), where the state machine allows both calls,
+ * so the error can only mean "not supported". */
+static int check_unsupported(const run_setup* s, const char* uri) {
+  const char* instance = "unsupported_probe";
+  int result = 0;
+  fmi2Component c;
+  if (s->info->can_get_and_set_fmu_state && s->info->provides_directional_derivative) return 0;
+  c = instantiate(s, instance, uri);
+  if (c == NULL) return 1;
+  if (initialize(s, c, instance) != 0) {
+    s->api->fmi2FreeInstance(c);
+    return 1;
+  }
+  if (!s->info->can_get_and_set_fmu_state) {
+    fmi2FMUstate state = NULL;
+    int logs_before = g_log_count;
+    fmi2Status st = s->api->fmi2GetFMUstate(c, &state);
+    if (st != fmi2Error) {
+      result = fail(
+          "fmi2GetFMUstate returned %s, expected fmi2Error: the FMU does not declare "
+          "canGetAndSetFMUstate",
+          status_name(st));
+    } else if (g_log_count == logs_before) {
+      result = fail("fmi2GetFMUstate returned fmi2Error without a log message");
+    }
+  }
+  if (result == 0 && !s->info->provides_directional_derivative) {
+    fmi2ValueReference vr = s->info->output_count > 0 ? s->info->outputs[0] : 0;
+    fmi2Real in = 1.0;
+    fmi2Real out = 0.0;
+    int logs_before = g_log_count;
+    fmi2Status st = s->api->fmi2GetDirectionalDerivative(c, &vr, 1, &vr, 1, &in, &out);
+    if (st != fmi2Error) {
+      result = fail(
+          "fmi2GetDirectionalDerivative returned %s, expected fmi2Error: the FMU does "
+          "not declare providesDirectionalDerivative",
+          status_name(st));
+    } else if (g_log_count == logs_before) {
+      result = fail("fmi2GetDirectionalDerivative returned fmi2Error without a log message");
+    }
+  }
+  s->api->fmi2FreeInstance(c);
+  if (result == 0) printf("fmu_importer: undeclared capabilities return fmi2Error\n");
+  return result;
+}
+
+static int usage(void) {
+  fprintf(stderr, "usage: fmu_importer FILE.fmu [--steps N] [--twice] [--no-compare]\n");
+  return 2;
+}
+
+int main(int argc, char** argv) {
+  const char* fmu = NULL;
+  int steps = 100;
+  int twice = 0;
+  int compare = 1;
+  int i;
+  int result = 1;
+  char dir[PATH_MAX] = "";
+  char so_path[PATH_MAX];
+  char shown_name[PATH_MAX];
+  const char* tmp = getenv("TMPDIR");
+  model_info info;
+  void* handle = NULL;
+  fmu_functions api;
+  char* uri = NULL;
+  char* uri_slash = NULL;
+  double* traces[4] = {NULL, NULL, NULL, NULL};
+  fmi2CallbackFunctions callbacks;
+  run_setup setup;
+  size_t trace_size;
+
+  memset(&info, 0, sizeof info);
+  for (i = 1; i < argc; ++i) {
+    if (strcmp(argv[i], "--twice") == 0) {
+      twice = 1;
+    } else if (strcmp(argv[i], "--no-compare") == 0) {
+      compare = 0;
+    } else if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
+      char* stop = NULL;
+      long n = strtol(argv[++i], &stop, 10);
+      if (*stop != '\0' || n < 0 || n > 10000000) return usage();
+      steps = (int)n;
+    } else if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "--help") == 0) {
+      usage();
+      return 0;
+    } else if (argv[i][0] == '-' || fmu != NULL) {
+      return usage();
+    } else {
+      fmu = argv[i];
+    }
+  }
+  if (fmu == NULL) return usage();
+
+  if ((size_t)snprintf(dir, sizeof dir, "%s/fmu_importer_XXXXXX",
+                       tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp") >= sizeof dir) {
+    return fail("TMPDIR is too long");
+  }
+  if (mkdtemp(dir) == NULL) {
+    fail("mkdtemp(%s): %s", dir, strerror(errno));
+    dir[0] = '\0';
+    return 1;
+  }
+
+  if (unzip_fmu(fmu, dir) != 0 || read_model_description(dir, &info) != 0) goto cleanup;
+  printf("fmu_importer: %s: guid %s, modelIdentifier %s, %zu Real outputs, step %g\n", fmu,
+         info.guid, info.model_identifier, info.output_count, info.step_size);
+
+  if ((size_t)snprintf(so_path, sizeof so_path, "%s/binaries/linux64/%s.so", dir,
+                       info.model_identifier) >= sizeof so_path) {
+    fail("path of the binary is too long");
+    goto cleanup;
+  }
+  if (access(so_path, R_OK) != 0) {
+    fail("the FMU has no binaries/linux64/%s.so", info.model_identifier);
+    goto cleanup;
+  }
+  snprintf(shown_name, sizeof shown_name, "binaries/linux64/%s.so", info.model_identifier);
+  if (load_functions(so_path, shown_name, &handle, &api) != 0) goto cleanup;
+
+  if (api.fmi2GetVersion() == NULL || strcmp(api.fmi2GetVersion(), "2.0") != 0) {
+    fail("fmi2GetVersion() returned \"%s\", expected \"2.0\"",
+         api.fmi2GetVersion() != NULL ? api.fmi2GetVersion() : "(null)");
+    goto cleanup;
+  }
+  if (api.fmi2GetTypesPlatform() == NULL || strcmp(api.fmi2GetTypesPlatform(), "default") != 0) {
+    fail("fmi2GetTypesPlatform() returned \"%s\", expected \"default\"",
+         api.fmi2GetTypesPlatform() != NULL ? api.fmi2GetTypesPlatform() : "(null)");
+    goto cleanup;
+  }
+
+  uri = resource_uri(dir, 0);
+  uri_slash = resource_uri(dir, 1);
+  trace_size = (size_t)(steps + 1) * (info.output_count > 0 ? info.output_count : 1);
+  for (i = 0; i < 4; ++i) traces[i] = calloc(trace_size, sizeof(double));
+  if (uri == NULL || uri_slash == NULL || traces[0] == NULL || traces[1] == NULL ||
+      traces[2] == NULL || traces[3] == NULL) {
+    fail("out of memory");
+    goto cleanup;
+  }
+  callbacks.logger = importer_logger;
+  callbacks.allocateMemory = calloc;
+  callbacks.freeMemory = free;
+  callbacks.stepFinished = NULL;
+  callbacks.componentEnvironment = NULL;
+  setup.api = &api;
+  setup.info = &info;
+  setup.callbacks = &callbacks;
+  setup.steps = steps;
+
+  if (run_lifecycle(&setup, "run_1", uri, traces[0]) != 0) goto cleanup;
+  printf("fmu_importer: lifecycle 1 passed (%d steps)\n", steps);
+  if (check_wrong_guid(&setup, uri) != 0) goto cleanup;
+  printf("fmu_importer: wrong GUID rejected\n");
+  if (check_unsupported(&setup, uri) != 0) goto cleanup;
+  if (twice) {
+    if (run_lifecycle(&setup, "run_2", uri_slash, traces[1]) != 0) goto cleanup;
+    if (compare && compare_traces(&setup, traces[0], traces[1], "run_2") != 0) goto cleanup;
+    printf("fmu_importer: lifecycle 2 passed (resource URI with trailing '/')\n");
+    if (info.only_once_per_process) {
+      printf("fmu_importer: canBeInstantiatedOnlyOncePerProcess: side-by-side run skipped\n");
+    } else {
+      if (run_side_by_side(&setup, uri, traces[2], traces[3]) != 0) goto cleanup;
+      if (compare && (compare_traces(&setup, traces[0], traces[2], "instance_a") != 0 ||
+                      compare_traces(&setup, traces[0], traces[3], "instance_b") != 0)) {
+        goto cleanup;
+      }
+      printf("fmu_importer: two instances side by side passed\n");
+    }
+  }
+  result = 0;
+  printf("fmu_importer: OK %s\n", fmu);
+
+cleanup:
+  for (i = 0; i < 4; ++i) free(traces[i]);
+  free(uri);
+  free(uri_slash);
+  if (handle != NULL && dlclose(handle) != 0) {
+    result = fail("dlclose: %s", dlerror());
+  }
+  free_model_info(&info);
+  remove_tree(dir);
+  return result;
+}

@@ -1,0 +1,111 @@
+// The stride CLI without FMUs: help, exit codes and one-line errors.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "process.hpp"
+#include "stride/cosim/archive.hpp"
+#include "zip_writer.hpp"
+
+namespace stride::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using test::quoted;
+using test::run_command;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+const fs::path k_data = STRIDE_TEST_DATA_DIR;
+const std::string k_cli = STRIDE_CLI;
+
+class cosim_cli : public ::testing::Test {
+ protected:
+  temp_dir scratch{"stride-cli-test-"};
+  test::process_result stride(const std::string& args) {
+    return run_command("'" + k_cli + "' " + args, scratch.path());
+  }
+};
+
+std::size_t lines(const std::string& s) {
+  return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
+}
+
+TEST_F(cosim_cli, help_lists_the_subcommands) {
+  const auto r = stride("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_THAT(r.out, HasSubstr("run"));
+  EXPECT_THAT(r.out, HasSubstr("inspect"));
+  EXPECT_THAT(r.out, HasSubstr("validate"));
+  for (const char* sub : {"run", "inspect", "validate"}) {
+    const auto h = stride(std::string(sub) + " --help");
+    EXPECT_EQ(h.exit_code, 0) << sub;
+  }
+  EXPECT_THAT(stride("run --help").out, HasSubstr("--stop-time"));
+  EXPECT_THAT(stride("run --help").out, HasSubstr("--set"));
+}
+
+TEST_F(cosim_cli, no_subcommand_or_unknown_option_fails) {
+  EXPECT_NE(stride("").exit_code, 0);
+  EXPECT_NE(stride("run --bogus").exit_code, 0);
+  EXPECT_NE(stride("inspect /no/such.fmu").exit_code, 0);
+}
+
+TEST_F(cosim_cli, malformed_system_gives_one_line_with_file_and_line) {
+  const auto r = stride("validate " + quoted(k_data / "malformed.xml"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, StartsWith("stride: error: " + (k_data / "malformed.xml").string() + ":5:"));
+  EXPECT_EQ(lines(r.err), 1u);
+}
+
+TEST_F(cosim_cli, missing_bundled_fmu_is_reported) {
+  const auto r = run_command(
+      "STRIDE_FMU_PATH=/nowhere '" + k_cli + "' validate " + quoted(k_data / "loop.xml"),
+      scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("loop.xml:4: component 'a': bundled FMU 'mock' not found"));
+  EXPECT_EQ(lines(r.err), 1u);
+}
+
+TEST_F(cosim_cli, run_rejects_a_bad_override_and_stop_time) {
+  auto r = stride("run " + quoted(k_data / "chain.xml") + " --set nodot --quiet");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--set 'nodot': expected component.variable=value"));
+  r = stride("run " + quoted(k_data / "chain.xml") + " --stop-time 1s --quiet");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--stop-time: '1s' is not a number of seconds"));
+}
+
+TEST_F(cosim_cli, inspect_lists_variables_without_loading_the_binary) {
+  const fs::path fmu = scratch.path() / "demo.fmu";
+  test::write_zip(fmu, {{"modelDescription.xml", R"(<?xml version="1.0"?>
+<fmiModelDescription fmiVersion="2.0" modelName="demo" guid="{42}">
+  <CoSimulation modelIdentifier="demo" canGetAndSetFMUstate="true"/>
+  <DefaultExperiment stepSize="0.01"/>
+  <ModelVariables>
+    <ScalarVariable name="gain" valueReference="0" causality="parameter" variability="tunable">
+      <Real start="2" unit="1"/>
+    </ScalarVariable>
+    <ScalarVariable name="label" valueReference="1" causality="parameter" variability="fixed">
+      <String start="hi"/>
+    </ScalarVariable>
+    <ScalarVariable name="y" valueReference="2" causality="output"><Real/></ScalarVariable>
+  </ModelVariables>
+  <ModelStructure><Outputs><Unknown index="3"/></Outputs></ModelStructure>
+</fmiModelDescription>)"}});
+  const auto r = stride("inspect " + quoted(fmu));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("{42}"));
+  EXPECT_THAT(r.out, HasSubstr("canGetAndSetFMUstate"));
+  EXPECT_THAT(r.out, HasSubstr("0.01"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("gain +parameter +tunable +Real +2 +1"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("label +parameter +fixed +String +\"hi\""));
+  // validate loads the binary, which this archive does not have
+  const auto v = stride("validate " + quoted(fmu));
+  EXPECT_EQ(v.exit_code, 1);
+  EXPECT_THAT(v.err, HasSubstr("missing binary binaries/linux64/demo.so"));
+}
+
+}  // namespace
+}  // namespace stride::cosim

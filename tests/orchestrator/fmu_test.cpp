@@ -1,0 +1,294 @@
+// FMU-level tests with the bundled stride_test.fmu: import, every value type across
+// connections, FMU-requested stop, errors, wrong GUID, the CLI end to end.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "process.hpp"
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/fmu.hpp"
+#include "stride/cosim/observers.hpp"
+#include "stride/cosim/run.hpp"
+#include "stride/cosim/system_builder.hpp"
+#include "zip_writer.hpp"
+
+namespace stride::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using test::quoted;
+using ::testing::HasSubstr;
+
+const fs::path k_fmu = fs::path(STRIDE_FMU_DIR) / "stride_test.fmu";
+const fs::path k_data = STRIDE_TEST_DATA_DIR;
+const std::string k_cli = STRIDE_CLI;
+
+struct captured_log {
+  std::vector<std::string> lines;
+  log_sink sink() {
+    return [this](log_level level, std::string_view source, std::string_view,
+                  std::string_view message) {
+      lines.push_back(std::string(to_string(level)) + " " + std::string(source) + ": " +
+                      std::string(message));
+    };
+  }
+};
+
+std::vector<std::string> read_lines(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// column `name` of the last row of a results CSV
+std::string last_value(const fs::path& csv, const std::string& name) {
+  const auto rows = read_lines(csv);
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        cells.push_back(cell);
+        cell.clear();
+      } else {
+        cell += c;
+      }
+    }
+    cells.push_back(cell);
+    return cells;
+  };
+  const auto header = split(rows.front());
+  const auto last = split(rows.back());
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == name) return last.at(i);
+  }
+  return "<no column " + name + ">";
+}
+
+class cosim_fmu_test : public ::testing::Test {
+ protected:
+  temp_dir scratch{"stride-fmu-test-"};
+  captured_log log;
+
+  run_options options(const std::string& out) {
+    run_options o;
+    o.output_dir = scratch.path() / out;
+    o.progress = false;
+    o.build.log = log.sink();
+    o.build.import.extract_root = scratch.path() / "extract";
+    fs::create_directories(o.build.import.extract_root);
+    return o;
+  }
+};
+
+TEST_F(cosim_fmu_test, imports_and_runs_one_instance_directly) {
+  fmu_import_options io;
+  io.extract_root = scratch.path();
+  auto f = fmu::load(k_fmu, io);
+  const auto& md = f->model_description();
+  EXPECT_EQ(md.co_simulation->model_identifier, "stride_test");
+  EXPECT_EQ(*md.default_experiment.step_size, 0.01);
+  const auto y = *md.index_of("y");
+  const auto u = *md.index_of("u");
+  const auto integral = *md.index_of("integral");
+  EXPECT_TRUE(md.has_feedthrough(y, u));
+  EXPECT_FALSE(md.has_feedthrough(integral, u));
+  EXPECT_EQ(md.variables[*md.index_of("gain")].variability, variability::tunable);
+  EXPECT_EQ(f->resource_uri().rfind("file://" + scratch.path().string(), 0), 0u);
+
+  auto c = f->instantiate("one", {log.sink(), false});
+  c->setup(time_point{}, time_point(std::chrono::seconds(1)));
+  c->enter_initialization();
+  const value_reference u_vr = md.variables[u].reference;
+  const value_reference y_vr = md.variables[y].reference;
+  const double three = 3.0;
+  c->set_real({&u_vr, 1}, {&three, 1});
+  double out = 0;
+  c->get_real({&y_vr, 1}, {&out, 1});
+  EXPECT_EQ(out, 6.0);  // gain 2 * u 3
+  c->exit_initialization();
+  EXPECT_EQ(c->do_step(time_point{}, duration(10'000'000)), step_result::complete);
+  c->terminate();
+  const fs::path extracted = f->extracted_dir();
+  EXPECT_TRUE(fs::exists(extracted));
+  c.reset();
+  f.reset();
+  EXPECT_FALSE(fs::exists(extracted));  // RAII cleanup
+}
+
+TEST_F(cosim_fmu_test, every_value_type_crosses_connections) {
+  auto o = options("pair");
+  const auto report = run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+  EXPECT_EQ(report.result.steps, 100);
+  EXPECT_EQ(report.result.end_time, time_point(std::chrono::seconds(1)));
+  const auto csv = report.results_file;
+  EXPECT_EQ(last_value(csv, "time"), "1");
+  EXPECT_EQ(last_value(csv, "a.y"), "3");  // gain 3 * u 1
+  EXPECT_EQ(last_value(csv, "b.y"), "6");  // gain 2 * a.y
+  EXPECT_EQ(last_value(csv, "a.counter"), "100");
+  EXPECT_EQ(last_value(csv, "b.echo"), "stridehello");  // b.label + a.echo
+  EXPECT_EQ(last_value(csv, "b.active"), "1");
+  EXPECT_EQ(last_value(csv, "b.vec_out[3]"), "12");                  // 2 * 2 * 3
+  EXPECT_NEAR(std::stod(last_value(csv, "b.integral")), 3.0, 1e-9);  // b.u = 3 for 1 s
+  // b.n = a.counter: b counts 1 + a.counter per step = 100 + (1 + ... + 100)
+  EXPECT_EQ(last_value(csv, "b.counter"), std::to_string(100 + 100 * 101 / 2));
+  const auto manifest = read_text(report.manifest_file);
+  EXPECT_THAT(manifest, HasSubstr("\"status\": \"ok\""));
+  EXPECT_THAT(manifest, HasSubstr("stride_test.fmu"));
+  EXPECT_TRUE(fs::is_empty(o.build.import.extract_root));
+}
+
+TEST_F(cosim_fmu_test, fmu_requested_stop_ends_the_run_cleanly) {
+  auto o = options("stop");
+  o.overrides = {"a.stop_after_steps=5"};
+  const auto report = run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+  EXPECT_TRUE(report.result.terminated_by_component);
+  EXPECT_EQ(report.result.terminated_by, "a");
+  EXPECT_EQ(report.result.end_time, time_point(std::chrono::milliseconds(40)));
+  EXPECT_EQ(read_lines(report.results_file).size(), 1u + 5u);  // header, t = 0 .. 0.04
+  EXPECT_THAT(read_text(report.manifest_file),
+              HasSubstr("\"ended_by\": \"component a requested termination\""));
+}
+
+TEST_F(cosim_fmu_test, fmu_error_names_component_function_and_time_and_keeps_results) {
+  auto o = options("fail");
+  o.overrides = {"a.fail_at_step=3"};
+  try {
+    run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+    FAIL() << "no error";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'a': fmi2DoStep returned fmi2Error"));
+    EXPECT_THAT(e.what(), HasSubstr("t = 0.02 s"));
+  }
+  EXPECT_EQ(read_lines(o.output_dir / "results.csv").size(), 1u + 3u);  // t = 0, 0.01, 0.02
+  const auto manifest = read_text(o.output_dir / "manifest.json");
+  EXPECT_THAT(manifest, HasSubstr("\"status\": \"error\""));
+  // the FMU's own message reached the log, prefixed with the instance name
+  bool logged = false;
+  for (const auto& l : log.lines) logged = logged || l.find("error a: ") == 0;
+  EXPECT_TRUE(logged);
+  EXPECT_TRUE(fs::is_empty(o.build.import.extract_root));
+}
+
+TEST_F(cosim_fmu_test, wrong_guid_is_refused_at_instantiation) {
+  auto entries = test::read_zip(k_fmu);
+  for (auto& e : entries) {
+    if (e.name != "modelDescription.xml") continue;
+    const auto at = e.content.find("guid=\"");
+    ASSERT_NE(at, std::string::npos);
+    e.content.replace(at + 6, 1, "0");  // change the first GUID character
+    if (e.content[at + 6] == '0') e.content[at + 6] = '1';
+  }
+  const fs::path bad = scratch.path() / "bad_guid.fmu";
+  test::write_zip(bad, entries);
+  auto f = fmu::load(bad);
+  EXPECT_THROW(f->instantiate("x", {log.sink(), false}), component_error);
+}
+
+TEST_F(cosim_fmu_test, missing_symbol_is_named) {
+  // an FMU whose binary is some other shared library: libzip exports no fmi2 functions
+  auto entries = test::read_zip(k_fmu);
+  const fs::path bad = scratch.path() / "no_symbols.fmu";
+  std::string libc;
+  for (const char* candidate :
+       {"/lib/x86_64-linux-gnu/libzip.so.4", "/usr/lib/x86_64-linux-gnu/libzip.so.4"}) {
+    if (fs::exists(candidate)) {
+      libc = read_text(candidate);
+      break;
+    }
+  }
+  if (libc.empty()) GTEST_SKIP() << "no shared library to plant";
+  for (auto& e : entries) {
+    if (e.name.ends_with(".so")) e.content = libc;
+  }
+  test::write_zip(bad, entries);
+  try {
+    fmu::load(bad);
+    FAIL();
+  } catch (const fmu_import_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("does not export fmi2"));
+  }
+}
+
+TEST_F(cosim_fmu_test, cli_run_writes_the_output_folder) {
+  const fs::path out = scratch.path() / "cli";
+  const auto r = test::run_command(
+      "'" + k_cli + "' run " + quoted(k_data / "stride_test_pair.xml") + " --output " +
+          quoted(out) + " --set a.gain=4 --set b.label=x --stop-time 0.5 --quiet",
+      scratch.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(last_value(out / "results.csv", "time"), "0.5");
+  EXPECT_EQ(last_value(out / "results.csv", "a.y"), "4");
+  EXPECT_EQ(last_value(out / "results.csv", "b.echo"), "xhello");
+  const auto copy = parse_system_file(out / "system.xml");
+  EXPECT_EQ(*copy.stop, time_point(std::chrono::milliseconds(500)));
+  EXPECT_TRUE(fs::exists(out / "manifest.json"));
+}
+
+TEST_F(cosim_fmu_test, cli_run_error_is_one_line_and_non_zero) {
+  const fs::path out = scratch.path() / "cli-fail";
+  const auto r =
+      test::run_command("'" + k_cli + "' run " + quoted(k_data / "stride_test_pair.xml") +
+                            " --output " + quoted(out) + " --set a.fail_at_step=2 --quiet",
+                        scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  const auto last_line_start = r.err.rfind("stride: error: ");
+  ASSERT_NE(last_line_start, std::string::npos) << r.err;
+  EXPECT_THAT(r.err.substr(last_line_start),
+              HasSubstr("component 'a': fmi2DoStep returned fmi2Error (step at t = 0.01 s)"));
+  EXPECT_TRUE(fs::exists(out / "results.csv"));
+}
+
+TEST_F(cosim_fmu_test, cli_validate_and_inspect) {
+  auto r = test::run_command("'" + k_cli + "' validate " + quoted(k_fmu), scratch.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("OK"));
+  r = test::run_command("'" + k_cli + "' validate " + quoted(k_data / "stride_test_pair.xml"),
+                        scratch.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("2 components"));
+  r = test::run_command("'" + k_cli + "' inspect " + quoted(k_fmu), scratch.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("gain +parameter +tunable +Real +2"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("y +output +continuous +Real"));
+}
+
+TEST_F(cosim_fmu_test, loop_through_feedthrough_outputs_is_found_from_model_structure) {
+  system_structure s;
+  s.stop = time_point(std::chrono::seconds(1));
+  s.base_step = duration(10'000'000);
+  s.add_component("a", "stride_test");
+  s.add_component("b", "stride_test");
+  s.connect("a.y", "b.u");
+  s.connect("b.y", "a.u");
+  build_options o;
+  o.log = log.sink();
+  try {
+    build_system(s, o);
+    FAIL();
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("a.y -> b.u => b.y -> a.u => a.y"));
+  }
+  s.connections[1].delayed = true;
+  EXPECT_NO_THROW(build_system(s, o));
+  s.connections[1] = {"b.integral", "a.u", false, {}};  // no feedthrough: fine
+  EXPECT_NO_THROW(build_system(s, o));
+}
+
+}  // namespace
+}  // namespace stride::cosim
