@@ -25,7 +25,9 @@ struct loaded_fmu {
     STRIDE_FMI2_CS_FUNCTIONS(STRIDE_RESOLVE)
 #undef STRIDE_RESOLVE
   }
-  ~loaded_fmu() { dlclose(handle); }
+  ~loaded_fmu() {
+    dlclose(handle);
+  }
 };
 
 std::string read_guid() {

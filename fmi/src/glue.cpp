@@ -16,7 +16,9 @@
 namespace stride::sdk::glue {
 namespace {
 
-const fmu_definition& definition() { return detail::registered_fmu(); }
+const fmu_definition& definition() {
+  return detail::registered_fmu();
+}
 
 const std::string& guid() {
   static const std::string value = compute_guid(definition());
@@ -63,15 +65,14 @@ bool settable(const variable& v, std::uint32_t state) {
   }
   if (state & step_complete) {
     return v.causality_kind == causality::input ||
-           (v.causality_kind == causality::parameter &&
-            v.variability_kind == variability::tunable);
+           (v.causality_kind == causality::parameter && v.variability_kind == variability::tunable);
   }
   return false;
 }
 
 std::string describe(const variable& v) {
-  return "'" + v.name + "' (" + to_string(v.causality_kind) + ", " +
-         to_string(v.variability_kind) + ")";
+  return "'" + v.name + "' (" + to_string(v.causality_kind) + ", " + to_string(v.variability_kind) +
+         ")";
 }
 
 // Looks up vr as a variable of `type`; logs and returns nullptr otherwise.
@@ -126,8 +127,8 @@ bool refresh_values(instance& inst, const char* function_name) {
 }
 
 template <class Stored, class FmiValue, class Convert>
-fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
-                      FmiValue value[], value_type type, const char* name, Convert convert) {
+fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, FmiValue value[],
+                      value_type type, const char* name, Convert convert) {
   instance* inst = enter(c, function::get_value, name);
   if (inst == nullptr || null_arguments(*inst, name, nvr, vr, value)) return fmi2Error;
   if (nvr > 0 && !refresh_values(*inst, name)) return fmi2Error;
@@ -144,8 +145,8 @@ template <class Store>
 fmi2Status set_one(instance& inst, const char* name, const variable& v, double numeric,
                    bool numeric_check, Store store) {
   if (!settable(v, inst.state)) {
-    return fail(inst, std::string(name) + ": variable " + describe(v) +
-                          " cannot be set in state " + state_name(inst.state));
+    return fail(inst, std::string(name) + ": variable " + describe(v) + " cannot be set in state " +
+                          state_name(inst.state));
   }
   if (numeric_check) {
     const std::string problem = range_problem(v, numeric);
@@ -194,7 +195,8 @@ std::string state_problem(const std::byte* bytes, size_t size) {
     return "not a Stride FMU state";
   }
   if (std::strncmp(header.guid, guid().c_str(), sizeof header.guid) != 0) {
-    return "state belongs to another FMU (GUID " + std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
+    return "state belongs to another FMU (GUID " +
+           std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
   }
   return {};
 }
@@ -256,16 +258,22 @@ void instance::create_component() {
 namespace __gnu_cxx {
 void __freeres() noexcept;
 }
-__attribute__((destructor)) static void release_static_libstdcxx() { __gnu_cxx::__freeres(); }
+__attribute__((destructor)) static void release_static_libstdcxx() {
+  __gnu_cxx::__freeres();
+}
 
 using namespace stride::sdk;
 using namespace stride::sdk::glue;
 
 extern "C" {
 
-const char* fmi2GetTypesPlatform(void) { return STRIDE_FMI2_TYPES_PLATFORM; }
+const char* fmi2GetTypesPlatform(void) {
+  return STRIDE_FMI2_TYPES_PLATFORM;
+}
 
-const char* fmi2GetVersion(void) { return STRIDE_FMI2_VERSION; }
+const char* fmi2GetVersion(void) {
+  return STRIDE_FMI2_VERSION;
+}
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
                               fmi2String fmuResourceLocation,
@@ -329,8 +337,7 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
 }
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
-                               fmi2Real startTime, fmi2Boolean stopTimeDefined,
-                               fmi2Real stopTime) {
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
   (void)toleranceDefined;
   (void)tolerance;
   instance* inst = enter(c, function::setup_experiment, "fmi2SetupExperiment");
@@ -433,9 +440,8 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
     const variable* v = lookup(*inst, "fmi2SetReal", vr[i], value_type::real);
     if (v == nullptr) return fmi2Error;
     const double x = value[i];
-    const fmi2Status s = set_one(*inst, "fmi2SetReal", *v, x, true, [&] {
-      std::memcpy(inst->data + v->offset, &x, sizeof x);
-    });
+    const fmi2Status s = set_one(*inst, "fmi2SetReal", *v, x, true,
+                                 [&] { std::memcpy(inst->data + v->offset, &x, sizeof x); });
     if (s != fmi2OK) return s;
   }
   return fmi2OK;
@@ -451,9 +457,8 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
     const variable* v = lookup(*inst, "fmi2SetInteger", vr[i], value_type::integer);
     if (v == nullptr) return fmi2Error;
     const int x = value[i];
-    const fmi2Status s = set_one(*inst, "fmi2SetInteger", *v, x, true, [&] {
-      std::memcpy(inst->data + v->offset, &x, sizeof x);
-    });
+    const fmi2Status s = set_one(*inst, "fmi2SetInteger", *v, x, true,
+                                 [&] { std::memcpy(inst->data + v->offset, &x, sizeof x); });
     if (s != fmi2OK) return s;
   }
   return fmi2OK;
@@ -469,9 +474,8 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
     const variable* v = lookup(*inst, "fmi2SetBoolean", vr[i], value_type::boolean);
     if (v == nullptr) return fmi2Error;
     const bool x = value[i] != fmi2False;
-    const fmi2Status s = set_one(*inst, "fmi2SetBoolean", *v, 0.0, false, [&] {
-      std::memcpy(inst->data + v->offset, &x, sizeof x);
-    });
+    const fmi2Status s = set_one(*inst, "fmi2SetBoolean", *v, 0.0, false,
+                                 [&] { std::memcpy(inst->data + v->offset, &x, sizeof x); });
     if (s != fmi2OK) return s;
   }
   return fmi2OK;
@@ -568,8 +572,8 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, si
   return fmi2OK;
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
-                                 fmi2Byte serializedState[], size_t size) {
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
+                                 size_t size) {
   instance* inst = enter(c, function::fmu_state, "fmi2SerializeFMUstate");
   if (inst == nullptr) return fmi2Error;
   saved_state* s = find_state(*inst, FMUstate);
@@ -619,7 +623,8 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
 }
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
-                      fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+                      fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
   (void)noSetFMUStatePriorToCurrentPoint;
   instance* inst = enter(c, function::do_step, "fmi2DoStep");
   if (inst == nullptr) return fmi2Error;

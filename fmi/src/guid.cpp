@@ -20,8 +20,8 @@ std::uint64_t fnv1a(const std::string& s, std::uint64_t hash) {
 
 std::string compute_guid(const fmu_definition& fmu) {
   // canonical text of the interface; the two seeds give 128 bits
-  std::string text = fmu.info.model_name + '|' + fmu.info.model_identifier + '|' +
-                     fmu.info.version + '|';
+  std::string text =
+      fmu.info.model_name + '|' + fmu.info.model_identifier + '|' + fmu.info.version + '|';
   for (const variable& v : fmu.table.variables()) {
     text += v.name + '|' + std::to_string(v.value_reference) + '|' + to_string(v.type) + '|' +
             to_string(v.causality_kind) + '|' + to_string(v.variability_kind) + '|' +

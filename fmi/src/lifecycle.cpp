@@ -4,16 +4,26 @@ namespace stride::sdk::glue {
 
 const char* state_name(std::uint32_t s) {
   switch (s) {
-    case instantiated: return "instantiated";
-    case initialization_mode: return "initializationMode";
-    case step_complete: return "stepComplete";
-    case step_in_progress: return "stepInProgress";
-    case step_failed: return "stepFailed";
-    case step_canceled: return "stepCanceled";
-    case terminated: return "terminated";
-    case error: return "error";
-    case fatal: return "fatal";
-    default: return "?";
+    case instantiated:
+      return "instantiated";
+    case initialization_mode:
+      return "initializationMode";
+    case step_complete:
+      return "stepComplete";
+    case step_in_progress:
+      return "stepInProgress";
+    case step_failed:
+      return "stepFailed";
+    case step_canceled:
+      return "stepCanceled";
+    case terminated:
+      return "terminated";
+    case error:
+      return "error";
+    case fatal:
+      return "fatal";
+    default:
+      return "?";
   }
 }
 

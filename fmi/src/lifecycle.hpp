@@ -44,30 +44,45 @@ constexpr std::uint32_t allowed_states(function f) {
   constexpr std::uint32_t any_but_fatal = instantiated | initialization_mode | step_complete |
                                           step_in_progress | step_failed | step_canceled |
                                           terminated | error;
-  constexpr std::uint32_t alive = instantiated | initialization_mode | step_complete |
-                                  step_failed | step_canceled | terminated | error;
+  constexpr std::uint32_t alive = instantiated | initialization_mode | step_complete | step_failed |
+                                  step_canceled | terminated | error;
   constexpr std::uint32_t readable =
       initialization_mode | step_complete | step_failed | step_canceled | terminated | error;
   switch (f) {
-    case function::set_debug_logging: return any_but_fatal;
-    case function::free_instance: return alive;
-    case function::setup_experiment: return instantiated;
-    case function::enter_initialization_mode: return instantiated;
-    case function::exit_initialization_mode: return initialization_mode;
-    case function::terminate: return step_complete | step_failed;
-    case function::reset: return alive;
-    case function::get_value: return readable;
-    case function::set_real: return instantiated | initialization_mode | step_complete;
-    case function::set_other: return instantiated | initialization_mode | step_complete;
-    case function::fmu_state: return alive;
-    case function::get_directional_derivative: return readable;
+    case function::set_debug_logging:
+      return any_but_fatal;
+    case function::free_instance:
+      return alive;
+    case function::setup_experiment:
+      return instantiated;
+    case function::enter_initialization_mode:
+      return instantiated;
+    case function::exit_initialization_mode:
+      return initialization_mode;
+    case function::terminate:
+      return step_complete | step_failed;
+    case function::reset:
+      return alive;
+    case function::get_value:
+      return readable;
+    case function::set_real:
+      return instantiated | initialization_mode | step_complete;
+    case function::set_other:
+      return instantiated | initialization_mode | step_complete;
+    case function::fmu_state:
+      return alive;
+    case function::get_directional_derivative:
+      return readable;
     case function::set_real_input_derivatives:
       return instantiated | initialization_mode | step_complete;
     case function::get_real_output_derivatives:
       return step_complete | step_failed | step_canceled | terminated | error;
-    case function::do_step: return step_complete;
-    case function::cancel_step: return step_in_progress;
-    case function::get_status: return step_complete | step_in_progress | step_failed | terminated;
+    case function::do_step:
+      return step_complete;
+    case function::cancel_step:
+      return step_in_progress;
+    case function::get_status:
+      return step_complete | step_in_progress | step_failed | terminated;
   }
   return 0;
 }

@@ -14,11 +14,20 @@ std::string escape(std::string_view s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -43,8 +52,7 @@ void write_type_element(std::ostringstream& xml, const variable& v, const void* 
 
 }  // namespace
 
-std::string write_model_description(const fmu_definition& fmu,
-                                    const std::string& generation_time) {
+std::string write_model_description(const fmu_definition& fmu, const std::string& generation_time) {
   const model_info& info = fmu.info;
   const variable_table& table = fmu.table;
   std::ostringstream xml;
@@ -72,7 +80,8 @@ std::string write_model_description(const fmu_definition& fmu,
 
   xml << "  <LogCategories>\n"
       << "    <Category name=\"logStatusWarning\" description=\"Warnings\"/>\n"
-      << "    <Category name=\"logStatusError\" description=\"Errors, including rejected calls\"/>\n"
+      << "    <Category name=\"logStatusError\" description=\"Errors, including rejected "
+         "calls\"/>\n"
       << "    <Category name=\"logStatusFatal\" description=\"Fatal errors\"/>\n"
       << "    <Category name=\"logEvents\" description=\"Lifecycle events of the instance\"/>\n"
       << "    <Category name=\"logCalls\" description=\"Every FMI function call\"/>\n";

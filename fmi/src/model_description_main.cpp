@@ -17,11 +17,12 @@ int main(int argc, char** argv) {
   }
   try {
     std::time_t now = std::time(nullptr);
-    if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = std::strtoll(epoch, nullptr, 10);
+    if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"))
+      now = std::strtoll(epoch, nullptr, 10);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    const std::string xml = stride::sdk::write_model_description(
-        stride::sdk::detail::registered_fmu(), stamp);
+    const std::string xml =
+        stride::sdk::write_model_description(stride::sdk::detail::registered_fmu(), stamp);
     std::ofstream out(argv[1], std::ios::binary);
     out << xml;
     if (!out) {

@@ -52,7 +52,9 @@ struct gait_data {
   std::uint32_t params_set_explicitly = 0;  // bit i: walking_param_table()[i] came from fmi2Set
 };
 
-double clamp_unit(double v) { return std::clamp(v, -1.0, 1.0); }
+double clamp_unit(double v) {
+  return std::clamp(v, -1.0, 1.0);
+}
 
 class gait_model : public sdk::model_base<gait_data> {
  public:
@@ -71,45 +73,63 @@ class gait_model : public sdk::model_base<gait_data> {
   static sdk::variable_table variables() {
     sdk::table_builder<gait_data> t;
     const gait_data& d = t.defaults();
-    t.add("x_move", &gait_data::x_move).input().unit("mm")
+    t.add("x_move", &gait_data::x_move)
+        .input()
+        .unit("mm")
         .describe("Forward step amplitude X (with webots_scaling: -1..1 for -20..20 mm)");
-    t.add("y_move", &gait_data::y_move).input().unit("mm")
+    t.add("y_move", &gait_data::y_move)
+        .input()
+        .unit("mm")
         .describe("Sideways step amplitude Y (with webots_scaling: -1..1 for -40..40 mm)");
-    t.add("a_move", &gait_data::a_move).input().unit("deg")
+    t.add("a_move", &gait_data::a_move)
+        .input()
+        .unit("deg")
         .describe("Turning amplitude A (with webots_scaling: -1..1 for -50..50 deg)");
     t.add("aim_on", &gait_data::aim_on).input().describe("Turning aim: toe-in, reversed turn");
     t.add("balance_on", &gait_data::balance_on).input().describe("Gyro balance feedback on");
-    t.add("walking", &gait_data::walking).input()
+    t.add("walking", &gait_data::walking)
+        .input()
         .describe("true: Start(); going false: Stop() (the gait ends its step, then stands)");
-    t.add("gyro_fb", &gait_data::gyro_fb).input()
+    t.add("gyro_fb", &gait_data::gyro_fb)
+        .input()
         .describe("Front/back (pitch-rate) gyro, raw board counts minus 512");
-    t.add("gyro_rl", &gait_data::gyro_rl).input()
+    t.add("gyro_rl", &gait_data::gyro_rl)
+        .input()
         .describe("Right/left (roll-rate) gyro, raw board counts minus 512");
 
     for (const param_info& p : walking_param_table()) {
-      sdk::variable_group v = p.real_member != nullptr
-                                  ? t.add_field(p.key, d.params.*p.real_member)
-                                  : t.add_field(p.key, d.params.*p.int_member);
-      v.parameter().tunable().describe(std::string(p.description) + " (takes effect: " +
-                                       p.latch + ")");
+      sdk::variable_group v = p.real_member != nullptr ? t.add_field(p.key, d.params.*p.real_member)
+                                                       : t.add_field(p.key, d.params.*p.int_member);
+      v.parameter().tunable().describe(std::string(p.description) + " (takes effect: " + p.latch +
+                                       ")");
       if (p.real_member != nullptr && *p.unit != '\0') v.unit(p.unit);
       if (std::isfinite(p.min) && !p.min_exclusive) v.min(p.min);
       if (std::isfinite(p.max) && !p.max_exclusive) v.max(p.max);
       v.check([&p](double value) { check_param_value(p, value); });
     }
-    t.add("config_file", &gait_data::config_file).parameter()
-        .describe("ROBOTIS config.ini ([Walking Config]) loaded before initialization: a path, or "
-                  "a file name in the FMU's resources/; parameters set explicitly win");
-    t.add("ik_mode", &gait_data::ik_mode).parameter().range(0, 1)
+    t.add("config_file", &gait_data::config_file)
+        .parameter()
+        .describe(
+            "ROBOTIS config.ini ([Walking Config]) loaded before initialization: a path, or "
+            "a file name in the FMU's resources/; parameters set explicitly win");
+    t.add("ik_mode", &gait_data::ik_mode)
+        .parameter()
+        .range(0, 1)
         .describe("Leg IK: 0 = darwin (framework, with its I + A*B quirk), 1 = geometric");
-    t.add("webots_scaling", &gait_data::webots_scaling).parameter()
+    t.add("webots_scaling", &gait_data::webots_scaling)
+        .parameter()
         .describe("Inputs x/y/a_move are -1..1 and scaled to 20 mm, 40 mm, 50 deg (Webots)");
 
-    t.add("servo_count", &gait_data::servo_count).output()
+    t.add("servo_count", &gait_data::servo_count)
+        .output()
         .describe("Goal position by servo ID, MX-28 counts 0..4095 (2048 = 0 deg)");
-    t.add("joint_angle", &gait_data::joint_angle).output().unit("rad")
+    t.add("joint_angle", &gait_data::joint_angle)
+        .output()
+        .unit("rad")
         .describe("Joint angle by servo ID, (count - 2048) * 0.088 deg, URDF joint convention");
-    t.add("phase", &gait_data::phase).output().unit("s")
+    t.add("phase", &gait_data::phase)
+        .output()
+        .unit("s")
         .describe("Gait-phase time of the last tick within the period");
     t.add("footsteps", &gait_data::footsteps).output().describe("Completed steps since start");
     t.add("is_walking", &gait_data::is_walking).output().describe("The gait clock is running");
@@ -181,7 +201,8 @@ class gait_model : public sdk::model_base<gait_data> {
   std::filesystem::path resolve_config_path() const {
     std::filesystem::path path(data_.config_file.c_str());
     if (path.is_relative() && !std::filesystem::exists(path) && !context_.resource_dir.empty()) {
-      const std::filesystem::path in_resources = std::filesystem::path(context_.resource_dir) / path;
+      const std::filesystem::path in_resources =
+          std::filesystem::path(context_.resource_dir) / path;
       if (std::filesystem::exists(in_resources)) return in_resources;
     }
     return path;

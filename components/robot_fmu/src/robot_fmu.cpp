@@ -98,54 +98,104 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
 
   static sdk::variable_table variables() {
     sdk::table_builder<robot_data> t;
-    t.add("joint_target", &robot_data::joint_target).input().unit("rad")
+    t.add("joint_target", &robot_data::joint_target)
+        .input()
+        .unit("rad")
         .describe("Servo target by servo ID, URDF joint convention");
-    t.add("reset", &robot_data::reset).input()
+    t.add("reset", &robot_data::reset)
+        .input()
         .describe("Any change puts the robot back standing in the walk-ready pose at the origin");
     t.add("push_x", &robot_data::push_x).input().unit("N").describe("Push on the torso, world x");
     t.add("push_y", &robot_data::push_y).input().unit("N").describe("Push on the torso, world y");
 
-    t.add("urdf", &robot_data::urdf).parameter()
+    t.add("urdf", &robot_data::urdf)
+        .parameter()
         .describe("URDF to load: a path, or a file in resources/ (empty: darwin-op.urdf)");
-    t.add("physics_step", &robot_data::physics_step).parameter().unit("s").range(1e-4, 0.05)
+    t.add("physics_step", &robot_data::physics_step)
+        .parameter()
+        .unit("s")
+        .range(1e-4, 0.05)
         .describe("Internal physics step; each doStep runs the whole steps that fit");
-    t.add("solver", &robot_data::solver).parameter().range(0, 1)
+    t.add("solver", &robot_data::solver)
+        .parameter()
+        .range(0, 1)
         .describe("0 = dWorldStep (deterministic), 1 = dWorldQuickStep (faster, not reproducible)");
     t.add("erp", &robot_data::erp).parameter().range(0, 1).describe("World error reduction");
-    t.add("cfm", &robot_data::cfm).parameter().range(0, 1).describe("World constraint force mixing");
-    t.add("friction", &robot_data::friction).parameter().range(0, 1e3)
+    t.add("cfm", &robot_data::cfm)
+        .parameter()
+        .range(0, 1)
+        .describe("World constraint force mixing");
+    t.add("friction", &robot_data::friction)
+        .parameter()
+        .range(0, 1e3)
         .describe("Coulomb friction coefficient of contacts");
     t.add("bounce", &robot_data::bounce).parameter().range(0, 1).describe("Contact restitution");
-    t.add("contact_soft_erp", &robot_data::contact_soft_erp).parameter().range(0, 1)
+    t.add("contact_soft_erp", &robot_data::contact_soft_erp)
+        .parameter()
+        .range(0, 1)
         .describe("Contact softness: error reduction");
-    t.add("contact_soft_cfm", &robot_data::contact_soft_cfm).parameter().range(0, 1)
+    t.add("contact_soft_cfm", &robot_data::contact_soft_cfm)
+        .parameter()
+        .range(0, 1)
         .describe("Contact softness: constraint force mixing");
-    t.add("servo_p_gain", &robot_data::servo_p_gain).parameter().unit("1/s").range(0, 1e4)
+    t.add("servo_p_gain", &robot_data::servo_p_gain)
+        .parameter()
+        .unit("1/s")
+        .range(0, 1e4)
         .describe("Velocity target = gain * position error");
-    t.add("servo_max_velocity", &robot_data::servo_max_velocity).parameter().unit("rad/s")
-        .range(0, 1e3).describe("Servo speed limit");
-    t.add("servo_max_acceleration", &robot_data::servo_max_acceleration).parameter()
-        .unit("rad/s2").range(0, 1e6).describe("Servo acceleration limit (0: none)");
-    t.add("servo_torque_limit", &robot_data::servo_torque_limit).parameter().unit("N.m")
-        .range(0, 1e3).describe("Servo torque limit");
-    t.add("servo_damping", &robot_data::servo_damping).parameter().unit("N.m.s/rad")
-        .range(0, 1e3).describe("Joint viscous damping");
-    t.add("servo_static_friction", &robot_data::servo_static_friction).parameter().unit("N.m")
-        .range(0, 1e3).describe("Joint static friction");
-    t.add("servo_compliance", &robot_data::servo_compliance).parameter().unit("N.m.s/rad")
-        .range(0, 1e6).describe("Motor compliance (0: rigid velocity servo)");
-    t.add("weld_arms_and_head", &robot_data::weld_arms_and_head).parameter()
+    t.add("servo_max_velocity", &robot_data::servo_max_velocity)
+        .parameter()
+        .unit("rad/s")
+        .range(0, 1e3)
+        .describe("Servo speed limit");
+    t.add("servo_max_acceleration", &robot_data::servo_max_acceleration)
+        .parameter()
+        .unit("rad/s2")
+        .range(0, 1e6)
+        .describe("Servo acceleration limit (0: none)");
+    t.add("servo_torque_limit", &robot_data::servo_torque_limit)
+        .parameter()
+        .unit("N.m")
+        .range(0, 1e3)
+        .describe("Servo torque limit");
+    t.add("servo_damping", &robot_data::servo_damping)
+        .parameter()
+        .unit("N.m.s/rad")
+        .range(0, 1e3)
+        .describe("Joint viscous damping");
+    t.add("servo_static_friction", &robot_data::servo_static_friction)
+        .parameter()
+        .unit("N.m")
+        .range(0, 1e3)
+        .describe("Joint static friction");
+    t.add("servo_compliance", &robot_data::servo_compliance)
+        .parameter()
+        .unit("N.m.s/rad")
+        .range(0, 1e6)
+        .describe("Motor compliance (0: rigid velocity servo)");
+    t.add("weld_arms_and_head", &robot_data::weld_arms_and_head)
+        .parameter()
         .describe("Hold servos 3-6, 19, 20 rigid in the walk-ready pose (about 2x faster)");
-    t.add("fall_tilt", &robot_data::fall_tilt).parameter().unit("rad").range(0, 3.2)
+    t.add("fall_tilt", &robot_data::fall_tilt)
+        .parameter()
+        .unit("rad")
+        .range(0, 3.2)
         .describe("fallen when the torso tilts more than this");
-    t.add("fall_height", &robot_data::fall_height).parameter().unit("m").range(-10, 10)
+    t.add("fall_height", &robot_data::fall_height)
+        .parameter()
+        .unit("m")
+        .range(-10, 10)
         .describe("fallen when the torso origin is lower than this");
 
-    t.add("joint_angle", &robot_data::joint_angle).output().unit("rad")
+    t.add("joint_angle", &robot_data::joint_angle)
+        .output()
+        .unit("rad")
         .describe("Joint angle by servo ID");
-    t.add("gyro_fb", &robot_data::gyro_fb).output()
+    t.add("gyro_fb", &robot_data::gyro_fb)
+        .output()
         .describe("Front/back gyro as the CM-730 reports it, counts minus 512");
-    t.add("gyro_rl", &robot_data::gyro_rl).output()
+    t.add("gyro_rl", &robot_data::gyro_rl)
+        .output()
         .describe("Right/left gyro as the CM-730 reports it, counts minus 512");
     t.add("gyro", &robot_data::gyro).output().unit("rad/s").describe("Torso angular velocity");
     t.add("acc", &robot_data::acc).output().unit("m/s2").describe("Torso specific force");
@@ -158,13 +208,20 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
     t.add("com_x", &robot_data::com_x).output().unit("m").describe("Centre of mass x");
     t.add("com_y", &robot_data::com_y).output().unit("m").describe("Centre of mass y");
     t.add("com_z", &robot_data::com_z).output().unit("m").describe("Centre of mass z");
-    t.add("left_foot_force", &robot_data::left_foot_force).output().unit("N")
+    t.add("left_foot_force", &robot_data::left_foot_force)
+        .output()
+        .unit("N")
         .describe("Normal floor force on the left foot");
-    t.add("right_foot_force", &robot_data::right_foot_force).output().unit("N")
+    t.add("right_foot_force", &robot_data::right_foot_force)
+        .output()
+        .unit("N")
         .describe("Normal floor force on the right foot");
-    t.add("max_penetration", &robot_data::max_penetration).output().unit("m")
+    t.add("max_penetration", &robot_data::max_penetration)
+        .output()
+        .unit("m")
         .describe("Deepest floor penetration in the last physics step");
-    t.add("fallen", &robot_data::fallen).output()
+    t.add("fallen", &robot_data::fallen)
+        .output()
         .describe("Torso tilt past fall_tilt or torso below fall_height (held until reset)");
     return t.finish();
   }
@@ -172,7 +229,8 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
   void exit_initialization() override {
     build_plant();
     data_.applied_reset = data_.reset;
-    sim_->set_joint_targets(std::span<const double>(data_.joint_target, static_cast<std::size_t>(sim_->servo_count())));
+    sim_->set_joint_targets(
+        std::span<const double>(data_.joint_target, static_cast<std::size_t>(sim_->servo_count())));
     publish();
   }
 
@@ -181,7 +239,8 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
       sim_->reset();
       data_.applied_reset = data_.reset;
     }
-    sim_->set_joint_targets(std::span<const double>(data_.joint_target, static_cast<std::size_t>(sim_->servo_count())));
+    sim_->set_joint_targets(
+        std::span<const double>(data_.joint_target, static_cast<std::size_t>(sim_->servo_count())));
     sim_->set_push(data_.push_x, data_.push_y);
     sim_->step(sdk::to_seconds(h));
     publish();

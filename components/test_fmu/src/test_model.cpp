@@ -42,21 +42,38 @@ class test_model : public sdk::model_base<test_data> {
 
   static sdk::variable_table variables() {
     sdk::table_builder<test_data> t;
-    t.add("gain", &test_data::gain).parameter().tunable().range(-1e6, 1e6).describe("y = gain*u + offset");
-    t.add("offset", &test_data::offset).parameter().range(-1000, 1000).describe("Constant added to y");
+    t.add("gain", &test_data::gain)
+        .parameter()
+        .tunable()
+        .range(-1e6, 1e6)
+        .describe("y = gain*u + offset");
+    t.add("offset", &test_data::offset)
+        .parameter()
+        .range(-1000, 1000)
+        .describe("Constant added to y");
     t.add("u", &test_data::u).input().describe("Input signal");
     t.add("y", &test_data::y).output().depends_on({"u"}).describe("gain*u + offset (feedthrough)");
-    t.add("integral", &test_data::integral).output().unit("s").describe("Integral of u over the steps taken");
+    t.add("integral", &test_data::integral)
+        .output()
+        .unit("s")
+        .describe("Integral of u over the steps taken");
     t.add("n", &test_data::n).input().describe("Integer input added to the counter increment");
     t.add("counter", &test_data::counter).output().describe("Number of completed steps");
     t.add("enable", &test_data::enable).input().describe("Boolean input");
-    t.add("active", &test_data::active).output().depends_on({"enable"}).describe("Equals enable (feedthrough)");
+    t.add("active", &test_data::active)
+        .output()
+        .depends_on({"enable"})
+        .describe("Equals enable (feedthrough)");
     t.add("label", &test_data::label).parameter().describe("Free text copied to echo");
     t.add("suffix", &test_data::suffix).input().describe("Free text appended to echo");
     t.add("echo", &test_data::echo).output().depends_on({"suffix"}).describe("label + suffix");
-    t.add("stop_after_steps", &test_data::stop_after_steps).parameter().min(0)
+    t.add("stop_after_steps", &test_data::stop_after_steps)
+        .parameter()
+        .min(0)
         .describe("End the run after this many steps (0: never)");
-    t.add("fail_at_step", &test_data::fail_at_step).parameter().min(0)
+    t.add("fail_at_step", &test_data::fail_at_step)
+        .parameter()
+        .min(0)
         .describe("Fail with an error at this step (0: never)");
     t.add("vec_in", &test_data::vec_in).input().describe("Vector input");
     t.add("vec_out", &test_data::vec_out).output().describe("2*vec_in, updated by each step");

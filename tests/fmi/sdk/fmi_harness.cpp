@@ -11,8 +11,7 @@
 
 namespace stride::test {
 
-fmi_harness::fmi_harness()
-    : callbacks_{&fmi_harness::logger, nullptr, nullptr, nullptr, this} {
+fmi_harness::fmi_harness() : callbacks_{&fmi_harness::logger, nullptr, nullptr, nullptr, this} {
   component_ = fmi2Instantiate("test", fmi2CoSimulation, guid().c_str(), "file:///tmp", &callbacks_,
                                fmi2False, fmi2False);
   if (component_ == nullptr) throw std::runtime_error("fmi2Instantiate failed");

@@ -13,18 +13,30 @@
 namespace stride::test {
 namespace {
 
-enum class state { instantiated, initialization_mode, step_complete, step_failed, terminated, error };
+enum class state {
+  instantiated,
+  initialization_mode,
+  step_complete,
+  step_failed,
+  terminated,
+  error
+};
 
 const std::map<state, std::string> state_names = {
-    {state::instantiated, "instantiated"},   {state::initialization_mode, "initializationMode"},
-    {state::step_complete, "stepComplete"},  {state::step_failed, "stepFailed"},
-    {state::terminated, "terminated"},       {state::error, "error"}};
+    {state::instantiated, "instantiated"},  {state::initialization_mode, "initializationMode"},
+    {state::step_complete, "stepComplete"}, {state::step_failed, "stepFailed"},
+    {state::terminated, "terminated"},      {state::error, "error"}};
 
 void drive_to(fmi_harness& h, state s) {
   switch (s) {
-    case state::instantiated: return;
-    case state::initialization_mode: h.to_initialization_mode(); return;
-    case state::step_complete: h.to_step_complete(); return;
+    case state::instantiated:
+      return;
+    case state::initialization_mode:
+      h.to_initialization_mode();
+      return;
+    case state::step_complete:
+      h.to_step_complete();
+      return;
     case state::step_failed:
       ASSERT_EQ(h.set_integer("stop_after_steps", 1), fmi2OK);
       h.to_step_complete();
@@ -62,13 +74,21 @@ std::vector<call> calls() {
   return {
       {"fmi2SetDebugLogging", all, fmi2OK,
        [](fmi_harness& h) { return fmi2SetDebugLogging(h.c(), fmi2True, 0, nullptr); }},
-      {"fmi2SetupExperiment", {state::instantiated}, fmi2OK,
+      {"fmi2SetupExperiment",
+       {state::instantiated},
+       fmi2OK,
        [](fmi_harness& h) { return fmi2SetupExperiment(h.c(), fmi2False, 0, 0, fmi2False, 0); }},
-      {"fmi2EnterInitializationMode", {state::instantiated}, fmi2OK,
+      {"fmi2EnterInitializationMode",
+       {state::instantiated},
+       fmi2OK,
        [](fmi_harness& h) { return fmi2EnterInitializationMode(h.c()); }},
-      {"fmi2ExitInitializationMode", {state::initialization_mode}, fmi2OK,
+      {"fmi2ExitInitializationMode",
+       {state::initialization_mode},
+       fmi2OK,
        [](fmi_harness& h) { return fmi2ExitInitializationMode(h.c()); }},
-      {"fmi2Terminate", {state::step_complete, state::step_failed}, fmi2OK,
+      {"fmi2Terminate",
+       {state::step_complete, state::step_failed},
+       fmi2OK,
        [](fmi_harness& h) { return fmi2Terminate(h.c()); }},
       {"fmi2Reset", all, fmi2OK, [](fmi_harness& h) { return fmi2Reset(h.c()); }},
       {"fmi2GetReal", readable, fmi2OK,
@@ -138,7 +158,9 @@ std::vector<call> calls() {
          fmi2FreeFMUstate(h.c(), &copy);
          return r;
        }},
-      {"fmi2DoStep", {state::step_complete}, fmi2OK,
+      {"fmi2DoStep",
+       {state::step_complete},
+       fmi2OK,
        [](fmi_harness& h) { return fmi2DoStep(h.c(), 0.0, 0.01, fmi2True); }},
       {"fmi2GetStatus", status_readable, fmi2Discard,
        [](fmi_harness& h) {
@@ -166,21 +188,27 @@ std::vector<call> calls() {
          return fmi2GetStringStatus(h.c(), fmi2PendingStatus, &v);
        }},
       // capabilities the FMU declares absent: an error in every state
-      {"fmi2GetDirectionalDerivative", {}, fmi2OK,
+      {"fmi2GetDirectionalDerivative",
+       {},
+       fmi2OK,
        [](fmi_harness& h) {
          const fmi2ValueReference u = fmi_harness::vr("y"), k = fmi_harness::vr("u");
          const double dk = 1;
          double du;
          return fmi2GetDirectionalDerivative(h.c(), &u, 1, &k, 1, &dk, &du);
        }},
-      {"fmi2SetRealInputDerivatives", {}, fmi2OK,
+      {"fmi2SetRealInputDerivatives",
+       {},
+       fmi2OK,
        [](fmi_harness& h) {
          const fmi2ValueReference vr = fmi_harness::vr("u");
          const fmi2Integer order = 1;
          const double v = 0;
          return fmi2SetRealInputDerivatives(h.c(), &vr, 1, &order, &v);
        }},
-      {"fmi2GetRealOutputDerivatives", {}, fmi2OK,
+      {"fmi2GetRealOutputDerivatives",
+       {},
+       fmi2OK,
        [](fmi_harness& h) {
          const fmi2ValueReference vr = fmi_harness::vr("y");
          const fmi2Integer order = 1;
@@ -239,9 +267,9 @@ TEST(lifecycle, instantiate_rejects_wrong_guid_and_model_exchange) {
   EXPECT_EQ(fmi2Instantiate("x", fmi2ModelExchange, fmi_harness::guid().c_str(), nullptr,
                             &callbacks, 0, 0),
             nullptr);
-  EXPECT_EQ(fmi2Instantiate("x", fmi2CoSimulation, fmi_harness::guid().c_str(), nullptr, nullptr,
-                            0, 0),
-            nullptr);
+  EXPECT_EQ(
+      fmi2Instantiate("x", fmi2CoSimulation, fmi_harness::guid().c_str(), nullptr, nullptr, 0, 0),
+      nullptr);
 }
 
 TEST(lifecycle, version_and_platform) {

@@ -11,7 +11,9 @@
 namespace stride::test {
 namespace {
 
-const sdk::fmu_definition& fmu() { return sdk::detail::registered_fmu(); }
+const sdk::fmu_definition& fmu() {
+  return sdk::detail::registered_fmu();
+}
 
 TEST(model_description, every_variable_round_trips) {
   const std::string xml = sdk::write_model_description(fmu(), "2026-01-01T00:00:00Z");
@@ -25,7 +27,8 @@ TEST(model_description, every_variable_round_trips) {
   const auto& vars = fmu().table.variables();
   std::size_t i = 0;
   std::set<unsigned> references;
-  for (const auto* sv = root->FirstChildElement("ModelVariables")->FirstChildElement("ScalarVariable");
+  for (const auto* sv =
+           root->FirstChildElement("ModelVariables")->FirstChildElement("ScalarVariable");
        sv != nullptr; sv = sv->NextSiblingElement("ScalarVariable"), ++i) {
     ASSERT_LT(i, vars.size());
     EXPECT_EQ(sv->Attribute("name"), vars[i].name);

@@ -45,12 +45,11 @@ typedef enum {
 
 /* ---- callbacks handed to fmi2Instantiate ---- */
 typedef void (*fmi2CallbackLogger)(fmi2ComponentEnvironment componentEnvironment,
-                                   fmi2String instanceName, fmi2Status status,
-                                   fmi2String category, fmi2String message, ...);
+                                   fmi2String instanceName, fmi2Status status, fmi2String category,
+                                   fmi2String message, ...);
 typedef void* (*fmi2CallbackAllocateMemory)(size_t nobj, size_t size);
 typedef void (*fmi2CallbackFreeMemory)(void* obj);
-typedef void (*fmi2StepFinished)(fmi2ComponentEnvironment componentEnvironment,
-                                 fmi2Status status);
+typedef void (*fmi2StepFinished)(fmi2ComponentEnvironment componentEnvironment, fmi2Status status);
 
 typedef struct {
   const fmi2CallbackLogger logger;
@@ -74,15 +73,13 @@ STRIDE_FMI2_EXPORT fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean l
                                                   size_t nCategories,
                                                   const fmi2String categories[]);
 STRIDE_FMI2_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType,
-                                                 fmi2String fmuGUID,
-                                                 fmi2String fmuResourceLocation,
+                                                 fmi2String fmuGUID, fmi2String fmuResourceLocation,
                                                  const fmi2CallbackFunctions* functions,
                                                  fmi2Boolean visible, fmi2Boolean loggingOn);
 STRIDE_FMI2_EXPORT void fmi2FreeInstance(fmi2Component c);
 STRIDE_FMI2_EXPORT fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
                                                   fmi2Real tolerance, fmi2Real startTime,
-                                                  fmi2Boolean stopTimeDefined,
-                                                  fmi2Real stopTime);
+                                                  fmi2Boolean stopTimeDefined, fmi2Real stopTime);
 STRIDE_FMI2_EXPORT fmi2Status fmi2EnterInitializationMode(fmi2Component c);
 STRIDE_FMI2_EXPORT fmi2Status fmi2ExitInitializationMode(fmi2Component c);
 STRIDE_FMI2_EXPORT fmi2Status fmi2Terminate(fmi2Component c);
@@ -111,17 +108,19 @@ STRIDE_FMI2_EXPORT fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FM
 STRIDE_FMI2_EXPORT fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
                                                     fmi2Byte serializedState[], size_t size);
 STRIDE_FMI2_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c,
-                                                      const fmi2Byte serializedState[],
-                                                      size_t size, fmi2FMUstate* FMUstate);
-STRIDE_FMI2_EXPORT fmi2Status fmi2GetDirectionalDerivative(
-    fmi2Component c, const fmi2ValueReference vUnknown_ref[], size_t nUnknown,
-    const fmi2ValueReference vKnown_ref[], size_t nKnown, const fmi2Real dvKnown[],
-    fmi2Real dvUnknown[]);
+                                                      const fmi2Byte serializedState[], size_t size,
+                                                      fmi2FMUstate* FMUstate);
+STRIDE_FMI2_EXPORT fmi2Status fmi2GetDirectionalDerivative(fmi2Component c,
+                                                           const fmi2ValueReference vUnknown_ref[],
+                                                           size_t nUnknown,
+                                                           const fmi2ValueReference vKnown_ref[],
+                                                           size_t nKnown, const fmi2Real dvKnown[],
+                                                           fmi2Real dvUnknown[]);
 
 /* ---- Co-Simulation functions (9) ---- */
 STRIDE_FMI2_EXPORT fmi2Status fmi2SetRealInputDerivatives(fmi2Component c,
-                                                          const fmi2ValueReference vr[],
-                                                          size_t nvr, const fmi2Integer order[],
+                                                          const fmi2ValueReference vr[], size_t nvr,
+                                                          const fmi2Integer order[],
                                                           const fmi2Real value[]);
 STRIDE_FMI2_EXPORT fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c,
                                                            const fmi2ValueReference vr[],
@@ -193,40 +192,40 @@ typedef fmi2Status fmi2GetBooleanStatusTYPE(fmi2Component, const fmi2StatusKind,
 typedef fmi2Status fmi2GetStringStatusTYPE(fmi2Component, const fmi2StatusKind, fmi2String*);
 
 /* X-macro over the 34 function names, for importers that resolve them in a loop. */
-#define STRIDE_FMI2_CS_FUNCTIONS(X)                                                            \
-  X(fmi2GetTypesPlatform)                                                                      \
-  X(fmi2GetVersion)                                                                            \
-  X(fmi2SetDebugLogging)                                                                       \
-  X(fmi2Instantiate)                                                                           \
-  X(fmi2FreeInstance)                                                                          \
-  X(fmi2SetupExperiment)                                                                       \
-  X(fmi2EnterInitializationMode)                                                               \
-  X(fmi2ExitInitializationMode)                                                                \
-  X(fmi2Terminate)                                                                             \
-  X(fmi2Reset)                                                                                 \
-  X(fmi2GetReal)                                                                               \
-  X(fmi2GetInteger)                                                                            \
-  X(fmi2GetBoolean)                                                                            \
-  X(fmi2GetString)                                                                             \
-  X(fmi2SetReal)                                                                               \
-  X(fmi2SetInteger)                                                                            \
-  X(fmi2SetBoolean)                                                                            \
-  X(fmi2SetString)                                                                             \
-  X(fmi2GetFMUstate)                                                                           \
-  X(fmi2SetFMUstate)                                                                           \
-  X(fmi2FreeFMUstate)                                                                          \
-  X(fmi2SerializedFMUstateSize)                                                                \
-  X(fmi2SerializeFMUstate)                                                                     \
-  X(fmi2DeSerializeFMUstate)                                                                   \
-  X(fmi2GetDirectionalDerivative)                                                              \
-  X(fmi2SetRealInputDerivatives)                                                               \
-  X(fmi2GetRealOutputDerivatives)                                                              \
-  X(fmi2DoStep)                                                                                \
-  X(fmi2CancelStep)                                                                            \
-  X(fmi2GetStatus)                                                                             \
-  X(fmi2GetRealStatus)                                                                         \
-  X(fmi2GetIntegerStatus)                                                                      \
-  X(fmi2GetBooleanStatus)                                                                      \
+#define STRIDE_FMI2_CS_FUNCTIONS(X) \
+  X(fmi2GetTypesPlatform)           \
+  X(fmi2GetVersion)                 \
+  X(fmi2SetDebugLogging)            \
+  X(fmi2Instantiate)                \
+  X(fmi2FreeInstance)               \
+  X(fmi2SetupExperiment)            \
+  X(fmi2EnterInitializationMode)    \
+  X(fmi2ExitInitializationMode)     \
+  X(fmi2Terminate)                  \
+  X(fmi2Reset)                      \
+  X(fmi2GetReal)                    \
+  X(fmi2GetInteger)                 \
+  X(fmi2GetBoolean)                 \
+  X(fmi2GetString)                  \
+  X(fmi2SetReal)                    \
+  X(fmi2SetInteger)                 \
+  X(fmi2SetBoolean)                 \
+  X(fmi2SetString)                  \
+  X(fmi2GetFMUstate)                \
+  X(fmi2SetFMUstate)                \
+  X(fmi2FreeFMUstate)               \
+  X(fmi2SerializedFMUstateSize)     \
+  X(fmi2SerializeFMUstate)          \
+  X(fmi2DeSerializeFMUstate)        \
+  X(fmi2GetDirectionalDerivative)   \
+  X(fmi2SetRealInputDerivatives)    \
+  X(fmi2GetRealOutputDerivatives)   \
+  X(fmi2DoStep)                     \
+  X(fmi2CancelStep)                 \
+  X(fmi2GetStatus)                  \
+  X(fmi2GetRealStatus)              \
+  X(fmi2GetIntegerStatus)           \
+  X(fmi2GetBooleanStatus)           \
   X(fmi2GetStringStatus)
 
 #ifdef __cplusplus

@@ -29,13 +29,13 @@ const fmu_definition& registered_fmu();
 
 }  // namespace stride::sdk
 
-#define STRIDE_FMU(model_type)                                                       \
-  const ::stride::sdk::fmu_definition& ::stride::sdk::detail::registered_fmu() {     \
-    static const ::stride::sdk::fmu_definition definition{                           \
-        model_type::info(), model_type::variables(),                                 \
-        [](const ::stride::sdk::instance_context& context)                           \
-            -> std::unique_ptr<::stride::sdk::model> {                               \
-          return std::make_unique<model_type>(context);                              \
-        }};                                                                          \
-    return definition;                                                               \
+#define STRIDE_FMU(model_type)                                                   \
+  const ::stride::sdk::fmu_definition& ::stride::sdk::detail::registered_fmu() { \
+    static const ::stride::sdk::fmu_definition definition{                       \
+        model_type::info(), model_type::variables(),                             \
+        [](const ::stride::sdk::instance_context& context)                       \
+            -> std::unique_ptr<::stride::sdk::model> {                           \
+          return std::make_unique<model_type>(context);                          \
+        }};                                                                      \
+    return definition;                                                           \
   }

@@ -18,7 +18,9 @@ inline constexpr time_ns ns_per_second = 1'000'000'000;
 
 /// Converts seconds (as FMI passes them) to integer nanoseconds, rounding to nearest.
 time_ns to_time_ns(double seconds);
-inline double to_seconds(time_ns t) { return static_cast<double>(t) / 1e9; }
+inline double to_seconds(time_ns t) {
+  return static_cast<double>(t) / 1e9;
+}
 
 enum class value_type : std::uint8_t { real, integer, boolean, string };
 enum class causality : std::uint8_t { parameter, calculated_parameter, input, output, local };

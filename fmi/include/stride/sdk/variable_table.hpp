@@ -61,7 +61,9 @@ class variable_table {
   }
   const variable* find(std::string_view name) const;
   /// Position (1-based) of the variable in ModelVariables.
-  std::size_t index_of(const variable& v) const { return static_cast<std::size_t>(&v - vars_.data()) + 1; }
+  std::size_t index_of(const variable& v) const {
+    return static_cast<std::size_t>(&v - vars_.data()) + 1;
+  }
   /// The data struct as default-constructed: the start values.
   const void* defaults() const { return defaults_.get(); }
   std::size_t data_size() const { return data_size_; }
@@ -107,9 +109,9 @@ class variable_group {
   variable_group& tunable();               // parameter that may change during the run
   variable_group& calculated_parameter();  // computed from parameters during initialization
   variable_group& input();
-  variable_group& output();                // initial calculated, no feedthrough by default
+  variable_group& output();  // initial calculated, no feedthrough by default
   variable_group& local();
-  variable_group& discrete();              // variability discrete instead of continuous
+  variable_group& discrete();  // variability discrete instead of continuous
   variable_group& unit(std::string u);
   variable_group& describe(std::string d);
   variable_group& min(double v);
