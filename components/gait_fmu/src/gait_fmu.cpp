@@ -34,6 +34,7 @@ struct gait_data {
   bool walking = false;
   int gyro_fb = 0;
   int gyro_rl = 0;
+  int restart = 0;
   // parameters
   walking_params params{};
   sdk::text config_file{};
@@ -48,6 +49,7 @@ struct gait_data {
   // internal state
   walking_state generator{};
   bool was_walking = false;
+  int applied_restart = 0;
   bool warned_step_remainder = false;
   std::uint32_t params_set_explicitly = 0;  // bit i: walking_param_table()[i] came from fmi2Set
 };
@@ -96,6 +98,11 @@ class gait_model : public sdk::model_base<gait_data> {
     t.add("gyro_rl", &gait_data::gyro_rl)
         .input()
         .describe("Right/left (roll-rate) gyro, raw board counts minus 512");
+    t.add("restart", &gait_data::restart)
+        .input()
+        .describe(
+            "Any change re-initializes the generator (standing, t = 0); it then starts "
+            "again if walking is true");
 
     for (const param_info& p : walking_param_table()) {
       sdk::variable_group v = p.real_member != nullptr ? t.add_field(p.key, d.params.*p.real_member)
@@ -148,6 +155,7 @@ class gait_model : public sdk::model_base<gait_data> {
     generator_ = walking(data_.ik_mode == 0 ? ik_mode::darwin : ik_mode::geometric);
     data_.generator = generator_.initialize(data_.params);
     data_.was_walking = false;
+    data_.applied_restart = data_.restart;
     publish();
   }
 
@@ -157,6 +165,11 @@ class gait_model : public sdk::model_base<gait_data> {
       context_.log->warning("step size " + std::to_string(sdk::to_seconds(h)) +
                             " s is not a multiple of 8 ms: the remainder is dropped, the gait "
                             "runs slower than real time");
+    }
+    if (data_.restart != data_.applied_restart) {
+      data_.generator = generator_.initialize(data_.params);
+      data_.was_walking = false;
+      data_.applied_restart = data_.restart;
     }
     for (sdk::time_ns n = h / tick_ns; n > 0; --n) tick();
     publish();

@@ -200,6 +200,24 @@ TEST(gait_fmu, a_missing_or_bad_config_file_fails_initialization_with_its_name) 
   EXPECT_TRUE(f.logged("no-such-config.ini")) << f.last_message();
 }
 
+TEST(gait_fmu, restart_begins_the_walk_again_from_the_standing_pose) {
+  const auto golden = gait_test::read_csv(gait_test::data_path("02_fwd_X20_default.csv"));
+  raw_fmu f(gait_fmu_path());
+  fmi2Component c = f.instantiate();
+  ASSERT_EQ(f.set_real(c, "x_move", 20.0), fmi2OK);
+  ASSERT_EQ(f.set_boolean(c, "walking", true), fmi2OK);
+  f.initialize(c);
+  int k = 0;
+  for (; k < 130; ++k) ASSERT_EQ(f.fmi2DoStep(c, tick * k, tick, fmi2True), fmi2OK);
+  ASSERT_EQ(f.set_integer(c, "restart", 1), fmi2OK);
+  for (std::size_t row = 1; row < 100; ++row, ++k) {
+    ASSERT_EQ(f.fmi2DoStep(c, tick * k, tick, fmi2True), fmi2OK);
+    const std::vector<int> expected(golden.rows[row].begin() + 2, golden.rows[row].end());
+    ASSERT_EQ(servo_counts(f, c), expected) << "tick " << row - 1 << " after the restart";
+  }
+  EXPECT_EQ(f.integer(c, "footsteps"), 2);
+}
+
 TEST(gait_fmu, fmu_state_restores_the_continuation) {
   raw_fmu f(gait_fmu_path());
   fmi2Component c = f.instantiate();
