@@ -5,11 +5,11 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config make
-  libode-dev liburdfdom-dev libeigen3-dev
+  libode-dev liburdfdom-dev libeigen3-dev libceres-dev
   libtinyxml2-dev libzip-dev zipcmp zipmerge ziptool zip unzip
   libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  valgrind libxml2-utils binutils patchelf clang-format
+  valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox
 )
 
 missing=()

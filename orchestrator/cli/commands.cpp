@@ -1,5 +1,7 @@
 #include "commands.hpp"
 
+#include "plot.hpp"
+
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -16,8 +18,11 @@
 #include "stride/fmi_check/fmu_check.hpp"
 #endif
 
-// models/walk.xml, embedded at build time
+// the default scenario (models/experiments/demo.xml), embedded at build time
 std::string_view stride_default_scenario_xml();
+#ifndef STRIDE_DEFAULT_SCENARIO_NAME
+#define STRIDE_DEFAULT_SCENARIO_NAME "models/experiments/demo.xml"
+#endif
 
 namespace stride::cli {
 
@@ -36,7 +41,8 @@ cosim::time_point parse_stop(const std::string& text) {
 
 system_structure load_system(const std::optional<fs::path>& file) {
   if (file) return parse_system_file(*file);
-  return parse_system_text(stride_default_scenario_xml(), "(embedded) models/walk.xml");
+  return parse_system_text(stride_default_scenario_xml(),
+                           "(embedded) " STRIDE_DEFAULT_SCENARIO_NAME);
 }
 
 const char* yes_no(bool b) {
@@ -53,7 +59,29 @@ int run(const run_arguments& args) {
   options.progress = !args.quiet;
   options.build.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
   options.build.fmu_debug_logging = args.fmu_debug_log;
-  const run_report report = run_system(load_system(args.system), options);
+  std::optional<fs::path> system_file = args.system;
+  if (!args.resume.empty()) {
+    // resume the system as it was run (overrides included), unless another one is given
+    options.resume_dir = args.resume;
+    if (!system_file) system_file = args.resume / "system.xml";
+    if (!args.output.empty()) throw validation_error("--resume and --output exclude each other");
+  }
+  const run_report report = run_system(load_system(system_file), options);
+  if (has_learner_artefacts(report.output_dir)) {
+    // a learner run: where the best region is, and the figures
+    if (!args.quiet) std::fputs(summarize_run(report.output_dir).c_str(), stdout);
+    if (!args.no_plots) {
+      try {
+        const auto figures = write_figures(report.output_dir);
+        if (!args.quiet) {
+          std::printf("figures: %s (%zu PNG)\n", (report.output_dir / "figures").string().c_str(),
+                      figures.size());
+        }
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "stride: warning: no figures: %s\n", e.what());
+      }
+    }
+  }
   if (!args.quiet) {
     std::printf(
         "%s at t = %s s after %lld steps (%.2f s wall, real-time factor %.2f)\n",

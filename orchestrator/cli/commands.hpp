@@ -16,6 +16,8 @@ struct run_arguments {
   std::vector<std::string> sets;
   bool quiet = false;
   bool fmu_debug_log = false;
+  std::filesystem::path resume;  ///< --resume DIR (empty: a new run)
+  bool no_plots = false;         ///< skip the figures after a learner run
 };
 
 struct validate_arguments {

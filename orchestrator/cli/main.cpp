@@ -5,7 +5,9 @@
 #include <exception>
 #include <string>
 
+#include "calibrate.hpp"
 #include "commands.hpp"
+#include "plot.hpp"
 #include "stride/cosim/run.hpp"
 
 int main(int argc, char** argv) {
@@ -17,7 +19,9 @@ int main(int argc, char** argv) {
   std::string system_file;
   std::string stop_time;
   auto* run = app.add_subcommand(
-      "run", "Run a system (no SYSTEM.xml: the built-in walking scenario, models/walk.xml)");
+      "run",
+      "Run a system (no SYSTEM.xml: the built-in demo, Experiment 1 of the gait-parameter "
+      "learner at demo scale, models/experiments/demo.xml)");
   run->add_option("system", system_file, "System XML file")->check(CLI::ExistingFile);
   run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
   run->add_option("--output,-o", run_args.output,
@@ -27,6 +31,12 @@ int main(int argc, char** argv) {
   run->add_flag("--quiet,-q", run_args.quiet, "No progress display, only warnings and errors");
   run->add_flag("--fmu-debug-log", run_args.fmu_debug_log,
                 "Instantiate FMUs with debug logging on");
+  run->add_option("--resume", run_args.resume,
+                  "Continue the run in this output folder from its checkpoint (system: the "
+                  "folder's system.xml unless SYSTEM.xml is given; ${resume} = the folder)")
+      ->check(CLI::ExistingDirectory);
+  run->add_flag("--no-plots", run_args.no_plots,
+                "Do not write figures after a learner run (see `stride plot`)");
 
   std::string inspect_file;
   auto* inspect = app.add_subcommand("inspect", "Show an FMU's model description");
@@ -47,6 +57,17 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   validate->add_flag("--quiet,-q", validate_args.quiet, "Print only problems");
 
+  stride::cli::plot_arguments plot_args;
+  auto* plot = app.add_subcommand(
+      "plot", "Write the figures (PNG, gnuplot) and summary of a learner run's output folder");
+  plot->add_option("run_dir", plot_args.run_dir, "Output folder of the run")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  plot->add_flag("--quiet,-q", plot_args.quiet, "Print nothing");
+
+  stride::cli::calibrate_arguments calibrate_args;
+  auto* calibrate = stride::cli::add_calibrate_command(app, calibrate_args);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -56,6 +77,8 @@ int main(int argc, char** argv) {
       return stride::cli::run(run_args);
     }
     if (*inspect) return stride::cli::inspect(inspect_file);
+    if (*calibrate) return stride::cli::calibrate(calibrate_args);
+    if (*plot) return stride::cli::plot(plot_args);
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;

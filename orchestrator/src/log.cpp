@@ -1,5 +1,7 @@
 #include "stride/cosim/log.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <string>
 
@@ -20,12 +22,15 @@ std::string_view to_string(log_level level) noexcept {
 }
 
 log_sink stderr_log_sink(log_level min_level) {
-  return [min_level](log_level level, std::string_view source, std::string_view category,
-                     std::string_view message) {
+  // on a terminal a message first clears the line the progress display may be redrawing
+  const bool terminal = ::isatty(::fileno(stderr)) != 0;
+  return [min_level, terminal](log_level level, std::string_view source, std::string_view category,
+                               std::string_view message) {
     if (level < min_level) return;
     // one write per message so concurrent writers do not interleave within a line
     std::string line;
     line.reserve(source.size() + category.size() + message.size() + 32);
+    if (terminal) line += "\r\033[K";
     line += '[';
     line += source;
     line += "] ";

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -214,13 +215,45 @@ std::string progress_display::format(time_point t, double wall) const {
   return buf;
 }
 
+std::string progress_display::format(time_point t, double wall, const std::string& progress_name,
+                                     double progress) const {
+  const double sim = to_seconds(t - start_);
+  const double rtf = wall > 0 ? sim / wall : 0.0;
+  char buf[200];
+  if (progress > 0 && progress < 1) {
+    std::snprintf(buf, sizeof buf, "t = %.3f s, RTF %.2fx, %s %.1f%%, ETA %.0f s", to_seconds(t),
+                  rtf, progress_name.c_str(), 100.0 * progress,
+                  std::ceil(wall * (1 - progress) / progress));
+  } else {
+    std::snprintf(buf, sizeof buf, "t = %.3f s, RTF %.2fx, %s %.1f%%", to_seconds(t), rtf,
+                  progress_name.c_str(), 100.0 * std::clamp(progress, 0.0, 1.0));
+  }
+  return buf;
+}
+
+void progress_display::attach(execution& ex) {
+  auto& algo = ex.algorithm();
+  for (const variable_id& id : find_variables(algo, "*.progress")) {
+    const auto& v = algo.component_at(id.component).model_description().variables[id.variable];
+    if (v.causality != causality::output || v.type != variable_type::real) continue;
+    progress_var_ = algo.observe(id);
+    progress_name_ = algo.full_name(id);
+    break;
+  }
+}
+
+std::string progress_display::line(const execution& ex, time_point t, double wall) const {
+  if (!progress_var_) return format(t, wall);
+  return format(t, wall, progress_name_, ex.algorithm().real_value(*progress_var_));
+}
+
 void progress_display::simulation_initialized(const execution& ex, time_point t) {
   start_ = ex.start_time();
   wall_start_ = last_print_ = std::chrono::steady_clock::now();
   (void)t;
 }
 
-void progress_display::step_complete(const execution& /*ex*/, std::int64_t /*step*/, time_point t) {
+void progress_display::step_complete(const execution& ex, std::int64_t /*step*/, time_point t) {
   // look at the wall clock only every few steps
   if (countdown_ > 0) {
     --countdown_;
@@ -231,24 +264,24 @@ void progress_display::step_complete(const execution& /*ex*/, std::int64_t /*ste
   if (now - last_print_ < period_) return;
   last_print_ = now;
   const double wall = std::chrono::duration<double>(now - wall_start_).count();
-  const std::string line = format(t, wall);
+  const std::string text = line(ex, t, wall);
   if (terminal_) {
-    std::fprintf(out_, "\r\033[K%s", line.c_str());
+    std::fprintf(out_, "\r\033[K%s", text.c_str());
   } else {
-    std::fprintf(out_, "stride: %s\n", line.c_str());
+    std::fprintf(out_, "stride: %s\n", text.c_str());
   }
   std::fflush(out_);
 }
 
-void progress_display::simulation_ended(const execution& /*ex*/, time_point t,
+void progress_display::simulation_ended(const execution& ex, time_point t,
                                         const std::string& /*error*/) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
-  const std::string line = format(t, wall);
+  const std::string text = line(ex, t, wall);
   if (terminal_) {
-    std::fprintf(out_, "\r\033[K%s, wall %.2f s\n", line.c_str(), wall);
+    std::fprintf(out_, "\r\033[K%s, wall %.2f s\n", text.c_str(), wall);
   } else {
-    std::fprintf(out_, "stride: %s, wall %.2f s\n", line.c_str(), wall);
+    std::fprintf(out_, "stride: %s, wall %.2f s\n", text.c_str(), wall);
   }
   std::fflush(out_);
 }

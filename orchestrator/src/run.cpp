@@ -81,6 +81,7 @@ struct manifest_data {
   const built_system* built = nullptr;
   const run_report* report = nullptr;
   std::string started;
+  std::string resumed_from;  ///< the --resume folder, if any
 };
 
 std::string manifest_json(const manifest_data& m) {
@@ -94,6 +95,7 @@ std::string manifest_json(const manifest_data& m) {
   j << "  \"system\": " << json_string(s.name) << ",\n";
   j << "  \"system_file\": " << json_string(s.where.file) << ",\n";
   j << "  \"started_utc\": " << json_string(m.started) << ",\n";
+  if (!m.resumed_from.empty()) j << "  \"resumed_from\": " << json_string(m.resumed_from) << ",\n";
   j << "  \"algorithm\": " << json_string(to_string(s.algorithm)) << ",\n";
   j << "  \"start_time\": " << format_seconds(s.start) << ",\n";
   if (m.built) {
@@ -153,15 +155,78 @@ fs::path default_output_dir(const system_structure& system) {
   return candidate;
 }
 
+std::size_t substitute_placeholders(system_structure& system, const fs::path& output_dir,
+                                    const fs::path& resume_dir) {
+  static constexpr std::string_view k_output = "${output_dir}", k_resume = "${resume}";
+  std::size_t resume_uses = 0;
+  for (auto& c : system.components) {
+    for (auto& p : c.parameters) {
+      std::string out;
+      std::string_view rest = p.value;
+      for (auto pos = rest.find("${"); pos != std::string_view::npos; pos = rest.find("${")) {
+        out += rest.substr(0, pos);
+        rest.remove_prefix(pos);
+        if (rest.starts_with(k_output)) {
+          out += output_dir.string();
+          rest.remove_prefix(k_output.size());
+        } else if (rest.starts_with(k_resume)) {
+          out += resume_dir.string();
+          rest.remove_prefix(k_resume.size());
+          ++resume_uses;
+        } else {
+          const std::string where = p.where.str();
+          throw validation_error((where.empty() ? "" : where + ": ") + "parameter '" + c.name +
+                                 "." + p.variable + "': unknown placeholder in '" + p.value +
+                                 "' (known: ${output_dir}, ${resume})");
+        }
+      }
+      out += rest;
+      p.value = std::move(out);
+    }
+  }
+  return resume_uses;
+}
+
 run_report run_system(system_structure system, const run_options& options) {
   for (const auto& o : options.overrides) apply_override(system, o);
   if (options.stop) system.stop = *options.stop;
 
-  built_system built = build_system(system, options.build);
   run_report report;
-  report.output_dir = options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
+  const bool resuming = !options.resume_dir.empty();
+  if (resuming) {
+    if (!fs::is_directory(options.resume_dir)) {
+      throw validation_error("--resume: " + options.resume_dir.string() + " is not a folder");
+    }
+    report.output_dir = options.resume_dir;
+  } else {
+    report.output_dir =
+        options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
+  }
+  // the system as written to system.xml keeps its placeholders, so it can be run (resumed) again
+  const system_structure as_written = system;
+  const std::size_t resume_uses =
+      substitute_placeholders(system, fs::absolute(report.output_dir),
+                              resuming ? fs::absolute(options.resume_dir) : fs::path());
+  if (resuming && resume_uses == 0) {
+    throw validation_error("--resume: no parameter of system '" + system.name +
+                           "' uses ${resume}, so nothing would continue from " +
+                           options.resume_dir.string());
+  }
+  if (resuming && system.record.enabled) {
+    // keep what the interrupted run recorded
+    const fs::path first = system.record.file;
+    fs::path file = first;
+    for (int n = 1; fs::exists(report.output_dir / file); ++n) {
+      file = first.parent_path() /
+             (first.stem().string() + "-resumed" + (n > 1 ? "-" + std::to_string(n) : "") +
+              first.extension().string());
+    }
+    system.record.file = file.string();
+  }
+
+  built_system built = build_system(system, options.build);
   fs::create_directories(report.output_dir);
-  write_file(report.output_dir / "system.xml", to_xml(system));
+  write_file(report.output_dir / "system.xml", to_xml(as_written));
   report.manifest_file = report.output_dir / "manifest.json";
 
   auto& ex = *built.execution;
@@ -192,7 +257,8 @@ run_report run_system(system_structure system, const run_options& options) {
   }
   if (options.progress) ex.add_observer(std::make_shared<progress_display>(built.stop));
 
-  manifest_data m{&system, &built, &report, utc_now()};
+  manifest_data m{&system, &built, &report, utc_now(),
+                  resuming ? fs::absolute(options.resume_dir).string() : std::string()};
   const auto wall_start = std::chrono::steady_clock::now();
   auto finish_report = [&] {
     report.wall_seconds =

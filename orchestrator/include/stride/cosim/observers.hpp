@@ -62,11 +62,15 @@ class csv_recorder : public observer {
 
 /// Prints simulated time, real-time factor and ETA on a stream (stderr by default). On a
 /// terminal one line is redrawn a few times per second; otherwise a plain line is printed every
-/// `plain_period` of wall time.
+/// `plain_period` of wall time. When a component has a Real output named `progress` (a fraction
+/// 0..1 of its work, e.g. the learner's RL steps), the percentage and the ETA come from it
+/// instead of from the simulated time (a run that a component ends early).
 class progress_display : public observer {
  public:
   progress_display(time_point stop, std::FILE* out = stderr, std::optional<bool> terminal = {},
                    std::chrono::milliseconds plain_period = std::chrono::seconds(5));
+
+  void attach(execution& ex) override;
 
   void simulation_initialized(const execution& ex, time_point t) override;
   void step_complete(const execution& ex, std::int64_t step, time_point t) override;
@@ -74,8 +78,14 @@ class progress_display : public observer {
 
   /// The line that would be printed for simulated time `t` after `wall` seconds.
   std::string format(time_point t, double wall_seconds) const;
+  /// The same with a component's progress fraction (0..1) named `progress_name`.
+  std::string format(time_point t, double wall_seconds, const std::string& progress_name,
+                     double progress) const;
 
  private:
+  std::string line(const execution& ex, time_point t, double wall_seconds) const;
+  std::optional<observed_variable> progress_var_;
+  std::string progress_name_;
   time_point stop_;
   time_point start_{};
   std::FILE* out_;

@@ -25,7 +25,18 @@ struct run_options {
   std::optional<time_point> stop;      ///< replaces the system's stop time
   bool progress = true;                ///< progress display on stderr
   build_options build;
+  /// Continue the run recorded in this folder: it becomes the output folder, `${resume}` in
+  /// parameter values is replaced by it (else by ""), and an existing results file is kept (the
+  /// new one gets a `-resumed` suffix). The system must use `${resume}` somewhere.
+  std::filesystem::path resume_dir;
 };
+
+/// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder
+/// and `${resume}` by the folder being resumed ("" when not resuming); returns how many values
+/// mention `${resume}`. \throws validation_error naming file and line for any other `${...}`.
+std::size_t substitute_placeholders(system_structure& system,
+                                    const std::filesystem::path& output_dir,
+                                    const std::filesystem::path& resume_dir);
 
 /// What a run produced.
 struct run_report {
@@ -41,9 +52,10 @@ struct run_report {
 /// The default output folder name for a system, relative to the working directory.
 std::filesystem::path default_output_dir(const system_structure& system);
 
-/// Applies overrides, builds, creates the output folder, writes `system.xml` (with overrides),
-/// records, runs and writes `manifest.json`. On a run-time error the results so far and a
-/// manifest with "status": "error" are written and the error is rethrown.
+/// Applies overrides, substitutes placeholders, builds, creates the output folder, writes
+/// `system.xml` (with overrides, placeholders kept), records, runs and writes `manifest.json`. On a
+/// run-time error the results so far and a manifest with "status": "error" are written and the
+/// error is rethrown.
 run_report run_system(system_structure system, const run_options& options);
 
 }  // namespace stride::cosim

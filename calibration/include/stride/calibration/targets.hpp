@@ -1,0 +1,86 @@
+// Calibration targets: a standing joint posture (CSV) and a settled plant posture (INI).
+//
+// Joint posture (docs/calibration.md): a CSV file with a header; column `id` (servo ID 1..20,
+// any subset, each at most once) and exactly one of `count` (MX-28 counts, 2048 = 0 deg), `deg`
+// or `rad` (URDF/Webots joint convention, (count - 2048) * 0.088 deg). Other columns are ignored;
+// blank lines and lines starting with '#' are skipped.
+//
+// Plant posture: an INI file with a [Plant Target] section (pitch_deg, roll_deg, height_m,
+// com_over_support and their *_sigma_* scales) and an optional [Settle] section (time_s,
+// average_s, max_iterations).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stride::calibration {
+
+/// A malformed or invalid target file; the message starts with "file:line: " (or "file: ").
+class target_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Unit of the joint values of a target file.
+enum class angle_unit { count, deg, rad };
+
+/// Column name of a unit ("count", "deg", "rad").
+std::string_view to_string(angle_unit unit) noexcept;
+
+/// A value in `unit` as (untruncated) MX-28 counts, and back.
+double to_counts(double value, angle_unit unit);
+double from_counts(double counts, angle_unit unit);
+
+/// One joint of a posture target.
+struct joint_reading {
+  int id = 0;          ///< servo ID 1..20
+  double count = 0.0;  ///< the value converted to servo counts (not rounded)
+  int line = 0;        ///< line in the target file
+};
+
+/// A standing posture as a robot reports it.
+struct joint_target {
+  std::string source;  ///< file name, for messages
+  angle_unit unit = angle_unit::count;
+  std::vector<joint_reading> joints;  ///< in ascending ID order
+};
+
+/// Parses a joint target; `source` names it in messages. Throws target_error naming source and
+/// line for: a missing/ambiguous header, a row with the wrong number of fields, a non-integer or
+/// unknown ID (outside 1..20), a duplicate ID, a non-numeric or non-finite value, a value outside
+/// the servo range 0..4095 counts, and a file without joint rows.
+joint_target parse_joint_target(std::string_view text, const std::string& source);
+/// Reads and parses a file; an unreadable file is a target_error.
+joint_target read_joint_target(const std::filesystem::path& file);
+
+/// What the settled plant should look like, with the scale (1 sigma) of each residual.
+struct plant_target {
+  std::string source;
+  std::optional<double> pitch_deg;  ///< torso pitch, deg (+ leaning forward)
+  std::optional<double> roll_deg;   ///< torso roll, deg
+  std::optional<double> height_m;   ///< torso (root link) origin above the floor, m
+  bool com_over_support = false;    ///< whole-body CoM over the centre of the support polygon
+  double pitch_sigma_deg = 0.2;
+  double roll_sigma_deg = 0.2;
+  double height_sigma_m = 0.002;
+  double com_sigma_m = 0.002;
+  double settle_s = 1.0;    ///< simulated settle time per evaluation (whole 8 ms steps)
+  double average_s = 0.2;   ///< outputs averaged over the last average_s of the settle
+  int max_iterations = 20;  ///< solver iterations
+
+  /// Number of residuals (com_over_support counts two: x and y).
+  int residual_count() const;
+};
+
+/// Parses a plant target. Throws target_error naming source and line for: a line that is not
+/// "key = value", an entry outside the two sections, an unknown or repeated key, a non-numeric
+/// or out-of-range value, and a file that sets no target.
+plant_target parse_plant_target(std::string_view text, const std::string& source);
+/// Reads and parses a file; an unreadable file is a target_error.
+plant_target read_plant_target(const std::filesystem::path& file);
+
+}  // namespace stride::calibration

@@ -1,0 +1,121 @@
+// What a learner run leaves in its output folder, and its checkpoint.
+//
+//   v_table.csv            grid coordinates + V, one row per state (index order); at the end
+//   v_snapshot_<N>.csv     the same after RL step N (snapshot_steps)
+//   episodes.csv           one row per episode: reward, Σ|ΔV|, falls, start/end state
+//   steps.csv              one row per RL step (log_steps): state, action, speed, reward, δ
+//   paths.csv              torso x-y at every footstep and fall (path_every)
+//   best.txt, config.ini   the best state, and the base config with it applied
+//   evaluation.csv         evaluate mode: distance, mean speed, falls
+//   checkpoint.bin         written atomically (temp file + rename) at every episode boundary
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "stride/learner/session.hpp"
+
+namespace stride::learner {
+
+/// A learner checkpoint: enough to continue a run exactly from an episode boundary.
+struct checkpoint {
+  std::string config;            ///< learner_config::canonical() of the run
+  std::vector<std::byte> state;  ///< session_state bytes
+  std::vector<double> values;    ///< V
+  std::vector<eligibility_traces::entry> traces;
+  std::map<std::string, std::uint64_t> file_sizes;  ///< artefact CSV sizes to truncate to
+};
+
+/// Writes `file` atomically: `file`.tmp, flushed and synced, then renamed over `file`.
+void write_checkpoint(const std::filesystem::path& file, const checkpoint& c);
+/// Reads a checkpoint; throws learner_error naming the file for a missing, truncated or foreign
+/// file.
+checkpoint read_checkpoint(const std::filesystem::path& file);
+/// Throws learner_error naming the first setting that differs between a checkpoint's
+/// configuration and the run's.
+void check_checkpoint_config(const std::string& saved, const std::string& current,
+                             const std::filesystem::path& file);
+
+/// Writes the V table as CSV: one column per grid dimension, then V.
+void write_value_table(const std::filesystem::path& file, const state_grid& grid,
+                       const value_table& v);
+
+/// Appends rows to the run's CSV logs; each file gets its header when created. On resume the
+/// files are cut back to the sizes recorded in the checkpoint, so rows written after it vanish.
+class artefact_writer {
+ public:
+  artefact_writer() = default;
+  /// Opens (creating `dir`) the logs. `resume_sizes` empty: new files (existing ones replaced).
+  artefact_writer(std::filesystem::path dir, const state_grid& grid, bool log_steps,
+                  const std::map<std::string, std::uint64_t>* resume_sizes);
+  ~artefact_writer();
+  artefact_writer(const artefact_writer&) = delete;
+  artefact_writer& operator=(const artefact_writer&) = delete;
+  artefact_writer(artefact_writer&& other) noexcept;
+  artefact_writer& operator=(artefact_writer&& other) noexcept;
+
+  bool active() const { return !dir_.empty(); }
+  const std::filesystem::path& dir() const { return dir_; }
+
+  void step(const step_record& s);
+  void episode(const episode_record& e);
+  void path_point(std::int64_t episode, std::int64_t rl_step, double time, double x, double y,
+                  bool fallen);
+  /// Flushes every log and returns their sizes (for the checkpoint).
+  std::map<std::string, std::uint64_t> flush();
+  void close();
+
+ private:
+  struct log_file {
+    std::string name;
+    std::FILE* f = nullptr;
+  };
+  std::FILE* open(const std::string& name, const std::string& header,
+                  const std::map<std::string, std::uint64_t>* resume_sizes);
+  void write(std::FILE* f, const std::string& line);
+
+  std::filesystem::path dir_;
+  const state_grid* grid_ = nullptr;
+  std::vector<log_file> files_;
+  std::FILE* steps_ = nullptr;
+  std::FILE* episodes_ = nullptr;
+  std::FILE* paths_ = nullptr;
+};
+
+/// "period_time=600, swing_right_left=20" for a state or a point.
+std::string describe_point(const state_grid& grid, const std::vector<double>& values);
+
+/// The best states of a value table: the arg max, and the region spanned by the `top` states
+/// with the largest V, as per-dimension [min, max] bounds.
+struct best_summary {
+  std::size_t best = 0;
+  double best_value = 0;
+  std::vector<double> best_values;
+  std::vector<std::pair<double, double>> region;  ///< per dimension, values
+  std::size_t region_states = 0;
+  std::string text;  ///< human-readable, several lines
+};
+best_summary summarize_best(const state_grid& grid, const value_table& v, std::size_t top = 10);
+
+/// Checks both ends of every grid dimension that names a gait ([Walking Config]) parameter
+/// against that parameter's valid range; throws learner_error naming the parameter.
+void check_grid_against_gait(const state_grid& grid, std::string_view what = "grid");
+
+/// Parses "key=value,key=value" gait-parameter settings; throws learner_error naming the key
+/// (unknown key, bad number, value out of range).
+std::vector<std::pair<std::string, double>> parse_config_overrides(std::string_view text,
+                                                                   std::string_view what);
+
+/// Writes a ROBOTIS config.ini to `out`: the base file (`base` empty: the framework defaults),
+/// then `overrides`, then the grid dimensions that are gait parameters set to `values`. An
+/// existing base keeps its comments and other sections (the gait core's INI writer).
+void write_best_config(const std::filesystem::path& out, const std::filesystem::path& base,
+                       const std::vector<std::pair<std::string, double>>& overrides,
+                       const state_grid& grid, const std::vector<double>& values);
+
+}  // namespace stride::learner

@@ -1,0 +1,27 @@
+// The learner's random numbers: xoshiro256** seeded through splitmix64, with our own uniform
+// mappings, so a seed gives the same sequence on every platform and standard library (the
+// std:: distributions are implementation-defined). The state is trivially copyable: it is saved
+// in FMU states and checkpoints.
+#pragma once
+
+#include <cstdint>
+
+namespace stride::learner {
+
+struct rng_state {
+  std::uint64_t s[4] = {};
+};
+
+/// The state for a seed (any value, 0 included).
+rng_state seed_rng(std::uint64_t seed);
+
+/// Next 64 random bits.
+std::uint64_t next_u64(rng_state& r);
+
+/// Uniform integer in [0, n), n > 0, without modulo bias (Lemire's method with rejection).
+std::uint64_t uniform_below(rng_state& r, std::uint64_t n);
+
+/// Uniform double in [0, 1) with 53 random bits.
+double uniform01(rng_state& r);
+
+}  // namespace stride::learner

@@ -1,0 +1,174 @@
+// The learning (or evaluating) agent in its closed loop, without FMI: it watches the gait's
+// footstep counter, the torso position and the fall flag each communication step, turns W
+// footsteps into one RL step (speed → reward → TD(λ) update → next gait parameters), restarts the
+// robot after falls and at episode starts, and ends episodes after `steps_per_episode` steps or
+// `max_falls` falls.
+//
+// One RL step, in footsteps of gait.footsteps:
+//   settle:  `settle_footsteps` footsteps after new parameters were output (or after a restart),
+//            not measured: the generator latches period_time at the next double-support centre,
+//            so the first footstep after a change still runs on the old parameters;
+//   measure: W footsteps; speed = |Δ(x, y)| of the torso / elapsed simulated time.
+// A fall at any moment ends the step with the negative reward and restarts robot and gait.
+// Every episode starts with a restart too, so the continuation from an episode boundary depends
+// only on the learner's own state: that is what makes checkpoints exact (see learner_fmu.cpp).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "stride/learner/grid.hpp"
+#include "stride/learner/rng.hpp"
+#include "stride/learner/td_lambda.hpp"
+
+namespace stride::learner {
+
+enum class learner_mode : int {
+  learn = 0,     ///< TD(λ) over the grid
+  evaluate = 1,  ///< walk with fixed parameters and measure (no learning, no episodes)
+};
+
+/// Everything fixed for a run; defaults are the paper's Table 2 and Experiment 1.
+struct learner_config {
+  state_grid grid = state_grid::parse("period_time:450:960:15,swing_right_left:15:39:2");
+  learner_mode mode = learner_mode::learn;
+  std::vector<double> eval_point;  ///< evaluate: one value per grid dimension
+  td_params td{};
+  double epsilon = 0.15;
+  int steps_per_episode = 40;
+  int max_falls = 10;
+  int footsteps_per_step = 4;  ///< W
+  int settle_footsteps = 1;
+  reward_params reward{};
+  double initial_value = 0.0;
+  std::uint64_t seed = 1;
+  std::int64_t total_steps = 0;  ///< the run ends after this many RL steps; 0 = never
+  double step_timeout = 60.0;    ///< s of simulated time in one phase without enough footsteps
+
+  /// Throws learner_error naming the first setting out of its range.
+  void validate() const;
+  /// Every setting that shapes the learning as "key=value" lines, to check that a checkpoint
+  /// belongs to this configuration.
+  std::string canonical() const;
+};
+
+enum class walk_phase : int { settling = 0, measuring = 1, episode_ended = 2, finished = 3 };
+
+/// Everything that evolves besides V and the traces: trivially copyable (FMU state, checkpoint).
+struct session_state {
+  rng_state rng{};
+  std::int64_t clock_ns = 0;  ///< simulated time seen by the learner (restored by a resume)
+  std::int64_t state = 0;     ///< current grid state (learn mode)
+  std::int64_t rl_step = 0;   ///< completed RL steps (measurement windows when evaluating)
+  std::int64_t episode = 0;   ///< current episode, 1-based (0 before the first)
+  int step_in_episode = 0;
+  int falls_in_episode = 0;
+  std::int64_t total_falls = 0;
+  double episode_reward = 0;  ///< accumulated reward of the current episode
+  double last_reward = 0;
+  double last_speed = 0;  ///< cm/s of the last measured window
+  double last_delta = 0;
+  double last_episode_reward = 0;
+  double last_sum_abs_dv = 0;  ///< Σ|ΔV| of the last completed episode
+  std::int64_t episode_first_state = 0;
+  int phase = static_cast<int>(walk_phase::settling);
+  int footsteps_seen = 0;  ///< footsteps since the last restart
+  int last_footsteps = 0;  ///< the gait's counter at the previous step
+  int target_footsteps = 0;
+  std::int64_t phase_start_ns = 0;
+  double x0 = 0, y0 = 0;  ///< torso at the start of the measurement
+  std::int64_t t0_ns = 0;
+  int restarts = 0;              ///< counter output: robot reset and gait restart
+  bool restart_pending = false;  ///< a restart was output at the previous step
+  bool balance_gate = false;     ///< false on the one step right after a restart
+  double eval_distance = 0;      ///< evaluate: Σ distance of the measured windows, m
+  double eval_time = 0;          ///< evaluate: Σ duration of the measured windows, s
+};
+static_assert(std::is_trivially_copyable_v<session_state>);
+
+/// The plant as the learner sees it at a communication point.
+struct plant_inputs {
+  double base_x = 0;  ///< torso x, m
+  double base_y = 0;  ///< torso y, m
+  bool fallen = false;
+  int footsteps = 0;  ///< the gait's completed steps since its last (re)start
+};
+
+struct step_record {
+  std::int64_t rl_step = 0;  ///< 1-based number of this step
+  std::int64_t episode = 0;
+  int step_in_episode = 0;  ///< 1-based
+  std::size_t state = 0;
+  std::size_t action = 0;
+  std::size_t next_state = 0;
+  bool fell = false;
+  double distance = 0;  ///< m (0 after a fall)
+  double duration = 0;  ///< s (0 after a fall)
+  double speed = 0;     ///< cm/s
+  double reward = 0;
+  double delta = 0;
+  double value = 0;  ///< V(state) after the update
+};
+
+struct episode_record {
+  std::int64_t episode = 0;
+  int steps = 0;
+  int falls = 0;
+  double reward = 0;      ///< accumulated
+  double sum_abs_dv = 0;  ///< Σ_s |V_end(s) − V_start(s)|
+  std::size_t first_state = 0;
+  std::size_t last_state = 0;
+  std::int64_t rl_step = 0;  ///< RL steps done at its end
+  double time = 0;           ///< learner clock at its end, s
+  bool complete = true;      ///< false when the run ended inside the episode
+};
+
+/// What one advance() produced.
+struct advance_report {
+  bool footstep = false;   ///< the footstep counter moved
+  bool restarted = false;  ///< a restart was output (fall)
+  std::optional<step_record> step;
+  std::optional<episode_record> episode;  ///< the episode ended: call begin_episode() next
+  bool finished = false;                  ///< total_steps reached: end the run
+};
+
+/// The agent. Holds references: the state, the table and the traces live in the caller (the
+/// FMU keeps the state in its data struct and the table in the model).
+class session {
+ public:
+  session(const learner_config& config, session_state& state, value_table& values,
+          eligibility_traces& traces);
+
+  /// Fresh start: seeds the random numbers, then begins the first episode (learn) or the
+  /// evaluation. The plant is assumed fresh.
+  void start();
+  /// Begins the next episode after a report with `episode` set: a uniformly random start state,
+  /// traces cleared, and a restart of robot and gait.
+  void begin_episode();
+  /// One communication step of length h_ns with the plant's outputs at its end.
+  /// Throws learner_error when the plant does not progress (no footsteps within step_timeout,
+  /// or still fallen right after a reset).
+  advance_report advance(const plant_inputs& in, std::int64_t h_ns);
+
+  /// Gait parameter values to output now (grid values of the state, or the evaluation point).
+  std::vector<double> current_values() const;
+  walk_phase phase() const { return static_cast<walk_phase>(st_.phase); }
+  const learner_config& config() const { return cfg_; }
+
+ private:
+  void restart();
+  void start_measuring(const plant_inputs& in);
+  void finish_step(advance_report& r, const plant_inputs& in, bool fell, double distance,
+                   double duration);
+
+  const learner_config& cfg_;
+  session_state& st_;
+  value_table& v_;
+  eligibility_traces& z_;
+};
+
+}  // namespace stride::learner

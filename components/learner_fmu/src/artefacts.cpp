@@ -1,0 +1,444 @@
+#include "stride/learner/artefacts.hpp"
+
+#include "stride/gait/config_ini.hpp"
+#include "stride/gait/walking_params.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace stride::learner {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr char k_magic[8] = {'S', 'T', 'R', 'L', 'C', 'K', 'P', '1'};
+
+std::string errno_text() {
+  return std::strerror(errno);
+}
+
+class byte_writer {
+ public:
+  template <class T>
+  void put(const T& v) {
+    const auto* p = reinterpret_cast<const std::byte*>(&v);
+    out.insert(out.end(), p, p + sizeof(T));
+  }
+  void put_bytes(std::span<const std::byte> b) {
+    put(static_cast<std::uint64_t>(b.size()));
+    out.insert(out.end(), b.begin(), b.end());
+  }
+  void put_string(const std::string& s) {
+    put_bytes(std::span(reinterpret_cast<const std::byte*>(s.data()), s.size()));
+  }
+  std::vector<std::byte> out;
+};
+
+class byte_reader {
+ public:
+  byte_reader(std::span<const std::byte> in, const fs::path& file) : in_(in), file_(file) {}
+  template <class T>
+  T get() {
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, in_.data() + pos_, sizeof(T));
+    pos_ += sizeof(T);
+    return v;
+  }
+  std::vector<std::byte> get_bytes() {
+    const auto n = get<std::uint64_t>();
+    need(n);
+    std::vector<std::byte> b(in_.begin() + static_cast<std::ptrdiff_t>(pos_),
+                             in_.begin() + static_cast<std::ptrdiff_t>(pos_ + n));
+    pos_ += n;
+    return b;
+  }
+  std::string get_string() {
+    const auto b = get_bytes();
+    return std::string(reinterpret_cast<const char*>(b.data()), b.size());
+  }
+  void need(std::uint64_t n) const {
+    if (n > in_.size() - pos_) throw learner_error(file_.string() + ": checkpoint is truncated");
+  }
+  bool at_end() const { return pos_ == in_.size(); }
+
+ private:
+  std::span<const std::byte> in_;
+  std::size_t pos_ = 0;
+  const fs::path& file_;
+};
+
+std::map<std::string, std::string> parse_lines(const std::string& text) {
+  std::map<std::string, std::string> m;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto eq = line.find('=');
+    if (eq != std::string::npos) m[line.substr(0, eq)] = line.substr(eq + 1);
+  }
+  return m;
+}
+
+std::string csv_header(const state_grid& grid, const std::string& prefix) {
+  std::string h;
+  for (const auto& d : grid.dimensions()) h += (h.empty() ? "" : ",") + prefix + d.name;
+  return h;
+}
+
+std::string csv_values(const state_grid& grid, std::size_t s) {
+  std::string row;
+  for (double v : grid.values(s)) row += (row.empty() ? "" : ",") + format_number(v);
+  return row;
+}
+
+}  // namespace
+
+void write_checkpoint(const fs::path& file, const checkpoint& c) {
+  byte_writer w;
+  for (char ch : k_magic) w.put(ch);
+  w.put_string(c.config);
+  w.put_bytes(c.state);
+  w.put(static_cast<std::uint64_t>(c.values.size()));
+  for (double v : c.values) w.put(v);
+  w.put(static_cast<std::uint64_t>(c.traces.size()));
+  for (const auto& e : c.traces) {
+    w.put(static_cast<std::uint64_t>(e.state));
+    w.put(e.z);
+    w.put(e.v_start);
+  }
+  w.put(static_cast<std::uint64_t>(c.file_sizes.size()));
+  for (const auto& [name, size] : c.file_sizes) {
+    w.put_string(name);
+    w.put(size);
+  }
+  const fs::path tmp = file.string() + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw learner_error("cannot write " + tmp.string() + ": " + errno_text());
+  std::size_t done = 0;
+  while (done < w.out.size()) {
+    const ssize_t n = ::write(fd, w.out.data() + done, w.out.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string why = errno_text();
+      ::close(fd);
+      throw learner_error("cannot write " + tmp.string() + ": " + why);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    throw learner_error("cannot write " + tmp.string() + ": " + errno_text());
+  }
+  std::error_code ec;
+  fs::rename(tmp, file, ec);
+  if (ec)
+    throw learner_error("cannot rename " + tmp.string() + " to " + file.string() + ": " +
+                        ec.message());
+}
+
+checkpoint read_checkpoint(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw learner_error(file.string() + ": cannot read the checkpoint");
+  std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::span bytes(reinterpret_cast<const std::byte*>(raw.data()), raw.size());
+  if (bytes.size() < sizeof k_magic || std::memcmp(bytes.data(), k_magic, sizeof k_magic) != 0) {
+    throw learner_error(file.string() + ": not a learner checkpoint");
+  }
+  byte_reader r(bytes.subspan(sizeof k_magic), file);
+  checkpoint c;
+  c.config = r.get_string();
+  c.state = r.get_bytes();
+  const auto n = r.get<std::uint64_t>();
+  r.need(n * sizeof(double));
+  c.values.resize(n);
+  for (auto& v : c.values) v = r.get<double>();
+  const auto nt = r.get<std::uint64_t>();
+  r.need(nt * 24);
+  for (std::uint64_t i = 0; i < nt; ++i) {
+    eligibility_traces::entry e;
+    e.state = static_cast<std::size_t>(r.get<std::uint64_t>());
+    e.z = r.get<double>();
+    e.v_start = r.get<double>();
+    c.traces.push_back(e);
+  }
+  const auto nf = r.get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < nf; ++i) {
+    std::string name = r.get_string();
+    c.file_sizes[name] = r.get<std::uint64_t>();
+  }
+  if (!r.at_end()) throw learner_error(file.string() + ": trailing bytes after the checkpoint");
+  return c;
+}
+
+void check_checkpoint_config(const std::string& saved, const std::string& current,
+                             const fs::path& file) {
+  const auto a = parse_lines(saved);
+  const auto b = parse_lines(current);
+  for (const auto& [key, value] : b) {
+    const auto it = a.find(key);
+    const std::string old = it == a.end() ? "(absent)" : it->second;
+    if (old != value) {
+      throw learner_error(file.string() + ": the checkpoint was written with " + key + " = " + old +
+                          ", this run has " + key + " = " + value);
+    }
+  }
+}
+
+void write_value_table(const fs::path& file, const state_grid& grid, const value_table& v) {
+  std::string text = csv_header(grid, "") + ",V\n";
+  for (std::size_t s = 0; s < grid.size(); ++s) {
+    text += csv_values(grid, s) + "," + format_number(v.get(s)) + "\n";
+  }
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw learner_error("cannot write " + tmp.string());
+  }
+  std::error_code ec;
+  fs::rename(tmp, file, ec);
+  if (ec) throw learner_error("cannot write " + file.string() + ": " + ec.message());
+}
+
+artefact_writer::artefact_writer(fs::path dir, const state_grid& grid, bool log_steps,
+                                 const std::map<std::string, std::uint64_t>* resume_sizes)
+    : dir_(std::move(dir)), grid_(&grid) {
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) throw learner_error("cannot create output_dir " + dir_.string() + ": " + ec.message());
+  episodes_ = open("episodes.csv",
+                   "episode,steps,falls,reward,sum_abs_dv," + csv_header(grid, "start_") +
+                       ",rl_step,time,complete",
+                   resume_sizes);
+  if (log_steps) {
+    steps_ = open("steps.csv",
+                  "rl_step,episode,step," + csv_header(grid, "") +
+                      ",action,fell,distance,duration,speed,reward,delta,V",
+                  resume_sizes);
+  }
+  paths_ = open("paths.csv", "episode,rl_step,time,x,y,fallen", resume_sizes);
+}
+
+artefact_writer::~artefact_writer() {
+  close();
+}
+
+artefact_writer::artefact_writer(artefact_writer&& other) noexcept {
+  *this = std::move(other);
+}
+
+artefact_writer& artefact_writer::operator=(artefact_writer&& other) noexcept {
+  if (this != &other) {
+    close();
+    dir_ = std::move(other.dir_);
+    grid_ = other.grid_;
+    files_ = std::move(other.files_);
+    steps_ = other.steps_;
+    episodes_ = other.episodes_;
+    paths_ = other.paths_;
+    other.files_.clear();
+    other.dir_.clear();
+    other.steps_ = other.episodes_ = other.paths_ = nullptr;
+  }
+  return *this;
+}
+
+std::FILE* artefact_writer::open(const std::string& name, const std::string& header,
+                                 const std::map<std::string, std::uint64_t>* resume_sizes) {
+  const fs::path file = dir_ / name;
+  std::FILE* f = nullptr;
+  if (resume_sizes != nullptr && resume_sizes->count(name) && fs::exists(file)) {
+    // cut back to what the checkpoint had: rows after it are written again
+    std::error_code ec;
+    fs::resize_file(file, resume_sizes->at(name), ec);
+    if (ec) throw learner_error("cannot truncate " + file.string() + ": " + ec.message());
+    f = std::fopen(file.c_str(), "ab");
+  } else {
+    f = std::fopen(file.c_str(), "wb");
+    if (f != nullptr) std::fputs((header + "\n").c_str(), f);
+  }
+  if (f == nullptr) throw learner_error("cannot write " + file.string() + ": " + errno_text());
+  files_.push_back({name, f});
+  return f;
+}
+
+void artefact_writer::write(std::FILE* f, const std::string& line) {
+  if (f == nullptr) return;
+  if (std::fwrite(line.data(), 1, line.size(), f) != line.size()) {
+    throw learner_error("cannot write to " + dir_.string() + ": " + errno_text());
+  }
+}
+
+void artefact_writer::step(const step_record& s) {
+  if (steps_ == nullptr) return;
+  std::string line = std::to_string(s.rl_step) + "," + std::to_string(s.episode) + "," +
+                     std::to_string(s.step_in_episode) + "," + csv_values(*grid_, s.state) + "," +
+                     std::to_string(s.action) + "," + (s.fell ? "1" : "0") + "," +
+                     format_number(s.distance) + "," + format_number(s.duration) + "," +
+                     format_number(s.speed) + "," + format_number(s.reward) + "," +
+                     format_number(s.delta) + "," + format_number(s.value) + "\n";
+  write(steps_, line);
+}
+
+void artefact_writer::episode(const episode_record& e) {
+  std::string line = std::to_string(e.episode) + "," + std::to_string(e.steps) + "," +
+                     std::to_string(e.falls) + "," + format_number(e.reward) + "," +
+                     format_number(e.sum_abs_dv) + "," + csv_values(*grid_, e.first_state) + "," +
+                     std::to_string(e.rl_step) + "," + format_number(e.time) + "," +
+                     (e.complete ? "1" : "0") + "\n";
+  write(episodes_, line);
+}
+
+void artefact_writer::path_point(std::int64_t episode, std::int64_t rl_step, double time, double x,
+                                 double y, bool fallen) {
+  std::string line = std::to_string(episode) + "," + std::to_string(rl_step) + "," +
+                     format_number(time) + "," + format_number(x) + "," + format_number(y) + "," +
+                     (fallen ? "1" : "0") + "\n";
+  write(paths_, line);
+}
+
+std::map<std::string, std::uint64_t> artefact_writer::flush() {
+  std::map<std::string, std::uint64_t> sizes;
+  for (const auto& lf : files_) {
+    if (std::fflush(lf.f) != 0) {
+      throw learner_error("cannot write " + (dir_ / lf.name).string() + ": " + errno_text());
+    }
+    sizes[lf.name] = static_cast<std::uint64_t>(std::ftell(lf.f));
+  }
+  return sizes;
+}
+
+void artefact_writer::close() {
+  for (auto& lf : files_) {
+    if (lf.f != nullptr) std::fclose(lf.f);
+  }
+  files_.clear();
+  steps_ = episodes_ = paths_ = nullptr;
+}
+
+std::string describe_point(const state_grid& grid, const std::vector<double>& values) {
+  std::string s;
+  for (std::size_t d = 0; d < grid.dimension_count() && d < values.size(); ++d) {
+    s += (s.empty() ? "" : ", ") + grid.dimensions()[d].name + " = " + format_number(values[d]);
+  }
+  return s;
+}
+
+best_summary summarize_best(const state_grid& grid, const value_table& v, std::size_t top) {
+  best_summary b;
+  b.best = best_state(v);
+  b.best_value = v.get(b.best);
+  b.best_values = grid.values(b.best);
+  // the `top` states with the largest V (ties by index), as a bounding box
+  std::vector<std::size_t> order(v.size());
+  for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+  top = std::min(top, order.size());
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(top), order.end(),
+                    [&v](std::size_t a, std::size_t c) {
+                      return v.get(a) > v.get(c) || (v.get(a) == v.get(c) && a < c);
+                    });
+  b.region.assign(grid.dimension_count(), {0.0, 0.0});
+  for (std::size_t k = 0; k < top; ++k) {
+    const auto vals = grid.values(order[k]);
+    for (std::size_t d = 0; d < vals.size(); ++d) {
+      if (k == 0) {
+        b.region[d] = {vals[d], vals[d]};
+      } else {
+        b.region[d].first = std::min(b.region[d].first, vals[d]);
+        b.region[d].second = std::max(b.region[d].second, vals[d]);
+      }
+    }
+  }
+  b.region_states = top;
+  std::ostringstream t;
+  t << "best state: " << describe_point(grid, b.best_values)
+    << " (V = " << format_number(std::round(b.best_value * 1000) / 1000) << ")\n";
+  t << "best region (the " << top << " states with the largest V):";
+  for (std::size_t d = 0; d < b.region.size(); ++d) {
+    t << (d ? "," : "") << " " << grid.dimensions()[d].name << " "
+      << format_number(b.region[d].first) << ".." << format_number(b.region[d].second);
+  }
+  t << "\n";
+  b.text = t.str();
+  return b;
+}
+
+void check_grid_against_gait(const state_grid& grid, std::string_view what) {
+  for (const auto& d : grid.dimensions()) {
+    const gait::param_info* p = gait::find_param(d.name);
+    if (p == nullptr) continue;
+    for (double v : {d.value(0), d.value(d.count - 1)}) {
+      try {
+        gait::check_param_value(*p, v);
+      } catch (const std::invalid_argument& e) {
+        throw learner_error(std::string(what) + " dimension " + d.name + ": " + e.what());
+      }
+    }
+  }
+}
+
+std::vector<std::pair<std::string, double>> parse_config_overrides(std::string_view text,
+                                                                   std::string_view what) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const std::string& item : split_list(text)) {
+    if (item.empty()) continue;
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) {
+      throw learner_error(std::string(what) + ": '" + item + "' is not key=value");
+    }
+    std::string key = item.substr(0, eq);
+    while (!key.empty() && key.back() == ' ') key.pop_back();
+    const gait::param_info* p = gait::find_param(key);
+    if (p == nullptr) {
+      throw learner_error(std::string(what) + ": '" + key + "' is not a [Walking Config] key");
+    }
+    const double v = parse_number(item.substr(eq + 1), std::string(what) + " " + key);
+    try {
+      gait::check_param_value(*p, v);
+    } catch (const std::invalid_argument& e) {
+      throw learner_error(std::string(what) + ": " + e.what());
+    }
+    out.emplace_back(p->key, v);
+  }
+  return out;
+}
+
+void write_best_config(const fs::path& out, const fs::path& base,
+                       const std::vector<std::pair<std::string, double>>& overrides,
+                       const state_grid& grid, const std::vector<double>& values) {
+  try {
+    gait::walking_params params{};
+    gait::ini_document doc;
+    const bool has_base = !base.empty();
+    if (has_base) {
+      doc = gait::ini_document::load(base);
+      params = gait::read_walking_config(doc, params, nullptr);
+    }
+    for (const auto& [key, v] : overrides) gait::set_param(params, *gait::find_param(key), v);
+    for (std::size_t d = 0; d < grid.dimension_count() && d < values.size(); ++d) {
+      const gait::param_info* p = gait::find_param(grid.dimensions()[d].name);
+      if (p != nullptr) gait::set_param(params, *p, values[d]);
+    }
+    if (has_base) {
+      gait::update_walking_config(doc, params);
+      doc.save(out);
+    } else {
+      std::ofstream f(out, std::ios::binary);
+      f << gait::make_walking_config_text(params);
+      if (!f) throw learner_error("cannot write " + out.string());
+    }
+  } catch (const gait::config_error& e) {
+    throw learner_error(std::string("base_config: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw learner_error(std::string("config.ini: ") + e.what());
+  }
+}
+
+}  // namespace stride::learner

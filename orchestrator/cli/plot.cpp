@@ -1,0 +1,483 @@
+#include "plot.hpp"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace stride::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct csv_table {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+
+  int column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    return it == header.end() ? -1 : static_cast<int>(it - header.begin());
+  }
+};
+
+double to_number(const std::string& s) {
+  double v = std::nan("");
+  std::from_chars(s.data(), s.data() + s.size(), v);
+  return v;
+}
+
+// numeric CSV as written by learner.fmu (no quoting)
+csv_table read_csv(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  csv_table t;
+  std::string line;
+  bool first = true;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    if (first) {
+      t.header = cells;
+      first = false;
+      continue;
+    }
+    if (cells.size() != t.header.size()) continue;  // a row cut by a kill
+    std::vector<double> row;
+    for (const auto& c : cells) row.push_back(to_number(c));
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+void write_text(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+std::string num(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+// gnuplot single-quoted string
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'')
+      out += "''";
+    else
+      out += c;
+  }
+  return out + "'";
+}
+
+void run_gnuplot(const fs::path& script) {
+  const fs::path err = script.string() + ".err";
+  const std::string cmd = "gnuplot " + quote(script.string()) + " 2> " + quote(err.string());
+  const int status = std::system(cmd.c_str());
+  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::ifstream in(err);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+      throw std::runtime_error(
+          "gnuplot not found: install the Debian package gnuplot-nox (scripts/install-deps.sh)");
+    }
+    throw std::runtime_error("gnuplot failed on " + script.string() + ": " + text.str());
+  }
+  fs::remove(err);
+}
+
+const char* k_terminal = "set terminal pngcairo size 960,680 noenhanced font ',11'\n";
+
+std::string unit_of(const std::string& name) {
+  if (name == "period_time") return " (ms)";
+  if (name.find("swing") != std::string::npos || name.find("height") != std::string::npos ||
+      name.find("offset") != std::string::npos)
+    return " (mm)";
+  return "";
+}
+
+// moving average over the last `n` values (fewer at the start)
+std::vector<double> moving_average(const std::vector<double>& v, std::size_t n) {
+  std::vector<double> out(v.size());
+  double sum = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    sum += v[i];
+    if (i >= n) sum -= v[i - n];
+    out[i] = sum / static_cast<double>(std::min(i + 1, n));
+  }
+  return out;
+}
+
+struct figure_context {
+  fs::path run;      // folder with the learner's artefacts
+  fs::path figures;  // where PNGs go
+  std::string prefix;
+  std::vector<fs::path>* written;
+};
+
+void heatmap(const figure_context& fc, const fs::path& table_file, const std::string& title,
+             const std::string& name) {
+  const csv_table t = read_csv(table_file);
+  const int dims = static_cast<int>(t.header.size()) - 1;
+  if (dims < 2 || t.rows.empty()) return;
+  // max over the dimensions beyond the first two
+  std::map<std::pair<double, double>, double> cells;
+  for (const auto& r : t.rows) {
+    const auto key = std::make_pair(r[1], r[0]);
+    const double v = r[static_cast<std::size_t>(dims)];
+    const auto it = cells.find(key);
+    if (it == cells.end() || v > it->second) cells[key] = v;
+  }
+  std::string dat;
+  double prev_y = std::nan("");
+  double best_v = -INFINITY, best_x = 0, best_y = 0;
+  for (const auto& [key, v] : cells) {
+    if (!std::isnan(prev_y) && key.first != prev_y) dat += "\n";
+    prev_y = key.first;
+    dat += num(key.second) + " " + num(key.first) + " " + num(v) + "\n";
+    if (v > best_v) {
+      best_v = v;
+      best_x = key.second;
+      best_y = key.first;
+    }
+  }
+  const fs::path base = fc.figures / (fc.prefix + name);
+  write_text(base.string() + ".dat", dat);
+  std::string gp = k_terminal;
+  gp += "set output " + quote(base.string() + ".png") + "\n";
+  gp += "set title " + quote(title + (dims > 2 ? " (max over the other parameters)" : "")) + "\n";
+  gp += "set xlabel " + quote(t.header[0] + unit_of(t.header[0])) + "\n";
+  gp += "set ylabel " + quote(t.header[1] + unit_of(t.header[1])) + "\n";
+  gp += "set cblabel 'V(s)'\nset palette rgb 33,13,10\nset autoscale fix\nset key below\n";
+  gp += "plot " + quote(base.string() + ".dat") +
+        " using 1:2:3 with image notitle, '-' using 1:2 "
+        "with points pt 6 ps 3 lw 2 lc rgb 'white' title " +
+        quote("best: " + num(best_x) + ", " + num(best_y)) + "\n" + num(best_x) + " " +
+        num(best_y) + "\ne\n";
+  write_text(base.string() + ".gp", gp);
+  run_gnuplot(base.string() + ".gp");
+  fc.written->push_back(base.string() + ".png");
+}
+
+void profiles(const figure_context& fc, const csv_table& t) {
+  const std::size_t dims = t.header.size() - 1;
+  if (dims < 1 || t.rows.empty()) return;
+  const fs::path base = fc.figures / (fc.prefix + "v_profile");
+  std::string gp = k_terminal;
+  gp += "set output " + quote(base.string() + ".png") + "\n";
+  gp += "set multiplot layout 1," + std::to_string(dims) +
+        " title 'max V over the other "
+        "parameters, per parameter'\nset grid\n";
+  for (std::size_t d = 0; d < dims; ++d) {
+    std::map<double, double> best;
+    for (const auto& r : t.rows) {
+      const auto it = best.find(r[d]);
+      if (it == best.end() || r[dims] > it->second) best[r[d]] = r[dims];
+    }
+    std::string dat;
+    for (const auto& [x, v] : best) dat += num(x) + " " + num(v) + "\n";
+    const std::string file = base.string() + "_" + std::to_string(d + 1) + ".dat";
+    write_text(file, dat);
+    gp += "set xlabel " + quote(t.header[d] + unit_of(t.header[d])) + "\nset ylabel 'max V'\n";
+    gp += "plot " + quote(file) + " using 1:2 with linespoints pt 7 ps 0.6 lw 2 notitle\n";
+  }
+  gp += "unset multiplot\n";
+  write_text(base.string() + ".gp", gp);
+  run_gnuplot(base.string() + ".gp");
+  fc.written->push_back(base.string() + ".png");
+}
+
+void episode_series(const figure_context& fc, const csv_table& t, const std::string& column,
+                    const std::string& name, const std::string& title, const std::string& label) {
+  const int e = t.column("episode"), c = t.column(column);
+  if (e < 0 || c < 0 || t.rows.empty()) return;
+  std::vector<double> ys;
+  for (const auto& r : t.rows) ys.push_back(r[static_cast<std::size_t>(c)]);
+  const auto avg = moving_average(ys, 50);
+  std::string dat;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    dat +=
+        num(t.rows[i][static_cast<std::size_t>(e)]) + " " + num(ys[i]) + " " + num(avg[i]) + "\n";
+  }
+  const fs::path base = fc.figures / (fc.prefix + name);
+  write_text(base.string() + ".dat", dat);
+  std::string gp = k_terminal;
+  gp += "set output " + quote(base.string() + ".png") + "\n";
+  gp += "set title " + quote(title) + "\nset xlabel 'episode'\nset ylabel " + quote(label) +
+        "\nset grid\nset key top right\n";
+  gp += "plot " + quote(base.string() + ".dat") +
+        " using 1:2 with lines lc rgb '#a0a0a0' title 'per episode', '' using 1:3 with lines lw "
+        "3 lc rgb '#c03020' title '50-episode moving average'\n";
+  write_text(base.string() + ".gp", gp);
+  run_gnuplot(base.string() + ".gp");
+  fc.written->push_back(base.string() + ".png");
+}
+
+// x-y paths: one block per walk segment (a new one after a fall or at a new episode)
+std::string path_blocks(const csv_table& t, std::size_t max_segments, std::size_t* segments) {
+  const int ce = t.column("episode"), cx = t.column("x"), cy = t.column("y"),
+            cf = t.column("fallen");
+  if (ce < 0 || cx < 0 || cy < 0 || cf < 0) return {};
+  std::vector<std::string> blocks;
+  std::string block;
+  double episode = std::nan("");
+  for (const auto& r : t.rows) {
+    const double ep = r[static_cast<std::size_t>(ce)];
+    if (ep != episode && !block.empty()) {
+      blocks.push_back(block);
+      block.clear();
+    }
+    episode = ep;
+    block += num(r[static_cast<std::size_t>(cx)]) + " " + num(r[static_cast<std::size_t>(cy)]) +
+             " " + num(ep) + "\n";
+    if (r[static_cast<std::size_t>(cf)] != 0) {
+      blocks.push_back(block);
+      block.clear();
+    }
+  }
+  if (!block.empty()) blocks.push_back(block);
+  // the latest segments when there are too many
+  const std::size_t first = blocks.size() > max_segments ? blocks.size() - max_segments : 0;
+  std::string dat;
+  for (std::size_t i = first; i < blocks.size(); ++i) dat += blocks[i] + "\n";
+  *segments = blocks.size() - first;
+  return dat;
+}
+
+void paths_figure(const figure_context& fc, const fs::path& paths_file) {
+  const csv_table t = read_csv(paths_file);
+  std::size_t segments = 0;
+  const std::string dat = path_blocks(t, 3000, &segments);
+  if (segments == 0) return;
+  const fs::path base = fc.figures / (fc.prefix + "paths");
+  write_text(base.string() + ".dat", dat);
+  std::string gp = k_terminal;
+  gp += "set output " + quote(base.string() + ".png") + "\n";
+  gp += "set title " +
+        quote("travelled torso paths (" + std::to_string(segments) +
+              " walks from the origin; colour: episode)") +
+        "\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset grid\n"
+        "set cblabel 'episode'\nset palette rgb 30,31,32\n";
+  gp += "plot " + quote(base.string() + ".dat") + " using 1:2:3 with lines lc palette notitle\n";
+  write_text(base.string() + ".gp", gp);
+  run_gnuplot(base.string() + ".gp");
+  fc.written->push_back(base.string() + ".png");
+}
+
+std::vector<fs::path> candidate_dirs(const fs::path& dir) {
+  std::vector<fs::path> dirs{dir};
+  std::vector<fs::path> subs;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.is_directory() && e.path().filename() != "figures") subs.push_back(e.path());
+  }
+  std::sort(subs.begin(), subs.end());
+  dirs.insert(dirs.end(), subs.begin(), subs.end());
+  return dirs;
+}
+
+struct evaluation_row {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> point;
+  double windows = 0, falls = 0, distance = 0, measured = 0, speed = 0, sim = 0;
+};
+
+std::vector<evaluation_row> read_evaluations(const fs::path& dir) {
+  std::vector<evaluation_row> rows;
+  for (const auto& d : candidate_dirs(dir)) {
+    const fs::path file = d / "evaluation.csv";
+    if (!fs::exists(file)) continue;
+    std::ifstream in(file);
+    std::string h, v;
+    std::getline(in, h);
+    std::getline(in, v);
+    std::vector<std::string> hs, vs;
+    std::stringstream a(h), b(v);
+    std::string cell;
+    while (std::getline(a, cell, ',')) hs.push_back(cell);
+    while (std::getline(b, cell, ',')) vs.push_back(cell);
+    if (hs.size() != vs.size() || hs.size() < 6) continue;
+    evaluation_row r;
+    r.name = d == dir ? dir.filename().string() : d.filename().string();
+    const std::size_t n = hs.size() - 6;
+    for (std::size_t i = 0; i < n; ++i) r.point.emplace_back(hs[i], vs[i]);
+    r.windows = to_number(vs[n]);
+    r.falls = to_number(vs[n + 1]);
+    r.distance = to_number(vs[n + 2]);
+    r.measured = to_number(vs[n + 3]);
+    r.speed = to_number(vs[n + 4]);
+    r.sim = to_number(vs[n + 5]);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+void evaluation_figures(const fs::path& dir, const fs::path& figures,
+                        const std::vector<evaluation_row>& rows, std::vector<fs::path>* written) {
+  if (rows.empty()) return;
+  std::string dat;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::string label = rows[i].name;
+    for (const auto& [k, v] : rows[i].point) label += "\\n" + v;
+    dat += std::to_string(i) + " \"" + label + "\" " + num(rows[i].speed) + " " +
+           num(rows[i].falls) + "\n";
+  }
+  const fs::path base = figures / "evaluation";
+  write_text(base.string() + ".dat", dat);
+  std::string gp = k_terminal;
+  gp += "set output " + quote(base.string() + ".png") + "\n";
+  std::string names;
+  for (const auto& [k, v] : rows[0].point) names += (names.empty() ? "" : ", ") + k;
+  gp += "set title " + quote("evaluation: mean speed per point (" + names + "); label: falls") +
+        "\nset ylabel 'mean speed (cm/s)'\nset style fill solid 0.6\nset boxwidth 0.6\n"
+        "set yrange [0:*]\nset grid y\nset bmargin 6\n";
+  gp += "plot " + quote(base.string() + ".dat") +
+        " using 1:3:xtic(2) with boxes lc rgb '#3070b0' notitle, '' using 1:3:(sprintf('%d "
+        "falls', $4)) with labels offset 0,1 notitle\n";
+  write_text(base.string() + ".gp", gp);
+  run_gnuplot(base.string() + ".gp");
+  written->push_back(base.string() + ".png");
+
+  // the evaluators' paths in one figure, one colour per point
+  std::string plots;
+  int k = 0;
+  for (const auto& r : rows) {
+    const fs::path p = (r.name == dir.filename().string() ? dir : dir / r.name) / "paths.csv";
+    if (!fs::exists(p)) continue;
+    std::size_t segments = 0;
+    const std::string blocks = path_blocks(read_csv(p), 200, &segments);
+    if (segments == 0) continue;
+    const std::string file = (figures / ("eval_paths_" + r.name + ".dat")).string();
+    write_text(file, blocks);
+    plots += std::string(plots.empty() ? "" : ", ") + quote(file) +
+             " using 1:2 with lines lw 2 lt " + std::to_string(++k) + " title " + quote(r.name) +
+             "";
+  }
+  if (!plots.empty()) {
+    const fs::path pb = figures / "eval_paths";
+    std::string g = k_terminal;
+    g += "set output " + quote(pb.string() + ".png") +
+         "\nset title 'travelled torso paths per evaluation point'\nset xlabel 'x (m)'\n"
+         "set ylabel 'y (m)'\nset grid\nset key outside right\n";
+    g += "plot " + plots + "\n";
+    write_text(pb.string() + ".gp", g);
+    run_gnuplot(pb.string() + ".gp");
+    written->push_back(pb.string() + ".png");
+  }
+}
+
+}  // namespace
+
+bool has_learner_artefacts(const fs::path& dir) {
+  if (!fs::is_directory(dir)) return false;
+  for (const auto& d : candidate_dirs(dir)) {
+    if (fs::exists(d / "v_table.csv") || fs::exists(d / "evaluation.csv")) return true;
+  }
+  return false;
+}
+
+std::vector<fs::path> write_figures(const fs::path& dir) {
+  if (!fs::is_directory(dir)) throw std::runtime_error(dir.string() + " is not a folder");
+  const fs::path figures = dir / "figures";
+  fs::create_directories(figures);
+  std::vector<fs::path> written;
+  bool found = false;
+  for (const auto& d : candidate_dirs(dir)) {
+    if (!fs::exists(d / "v_table.csv")) continue;
+    found = true;
+    figure_context fc{d, figures, d == dir ? "" : d.filename().string() + "_", &written};
+    const csv_table v = read_csv(d / "v_table.csv");
+    std::string steps = "the run";
+    if (fs::exists(d / "best.txt")) {
+      std::ifstream in(d / "best.txt");
+      std::string line;
+      while (std::getline(in, line)) {
+        if (line.rfind("RL steps: ", 0) == 0) {
+          steps = line.substr(10, line.find(',') - 10) + " RL steps";
+        }
+      }
+    }
+    heatmap(fc, d / "v_table.csv", "V(s) after " + steps, "v_heatmap");
+    // snapshots, in step order
+    std::vector<std::pair<long long, fs::path>> snaps;
+    for (const auto& e : fs::directory_iterator(d)) {
+      const std::string n = e.path().filename().string();
+      if (n.rfind("v_snapshot_", 0) == 0 && e.path().extension() == ".csv") {
+        snaps.emplace_back(std::atoll(n.c_str() + 11), e.path());
+      }
+    }
+    std::sort(snaps.begin(), snaps.end());
+    for (const auto& [n, p] : snaps) {
+      heatmap(fc, p, "V(s) after " + std::to_string(n) + " RL steps",
+              "v_heatmap_" + std::to_string(n));
+    }
+    profiles(fc, v);
+    if (fs::exists(d / "episodes.csv")) {
+      const csv_table e = read_csv(d / "episodes.csv");
+      episode_series(fc, e, "sum_abs_dv", "convergence",
+                     "convergence: sum of |V change| per episode", "sum |dV|");
+      episode_series(fc, e, "reward", "reward", "accumulated reward per episode", "reward");
+    }
+    if (fs::exists(d / "paths.csv")) paths_figure(fc, d / "paths.csv");
+  }
+  const auto evals = read_evaluations(dir);
+  if (!evals.empty()) found = true;
+  evaluation_figures(dir, figures, evals, &written);
+  if (!found) {
+    throw std::runtime_error(dir.string() +
+                             ": no learner artefacts (v_table.csv or evaluation.csv) here or in "
+                             "the folders below");
+  }
+  return written;
+}
+
+std::string summarize_run(const fs::path& dir) {
+  std::string out;
+  for (const auto& d : candidate_dirs(dir)) {
+    const fs::path best = d / "best.txt";
+    if (!fs::exists(best)) continue;
+    std::ifstream in(best);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (d != dir) out += d.filename().string() + ":\n";
+    out += text.str();
+  }
+  const auto evals = read_evaluations(dir);
+  if (!evals.empty()) {
+    out += "evaluation (point: windows, falls, distance, measured time, mean speed):\n";
+    for (const auto& r : evals) {
+      std::string point;
+      for (const auto& [k, v] : r.point) point += (point.empty() ? "" : ", ") + k + " = " + v;
+      char buf[200];
+      std::snprintf(buf, sizeof buf, ": %.0f windows, %.0f falls, %.3f m in %.1f s, %.2f cm/s\n",
+                    r.windows, r.falls, r.distance, r.measured, r.speed);
+      out += "  " + r.name + " (" + point + ")" + buf;
+    }
+  }
+  return out;
+}
+
+int plot(const plot_arguments& args) {
+  const auto files = write_figures(args.run_dir);
+  if (!args.quiet) {
+    std::fputs(summarize_run(args.run_dir).c_str(), stdout);
+    for (const auto& f : files) std::printf("figure: %s\n", f.string().c_str());
+  }
+  return 0;
+}
+
+}  // namespace stride::cli

@@ -1,0 +1,154 @@
+// The learner in its real closed loop (gait.fmu + robot.fmu + learner.fmu, the demo system):
+// a short smoke run, and checkpoint/resume through the stride CLI: a run killed by the test hook
+// (SIGKILL in the middle of an episode) and continued with `stride run --resume` must end with
+// files bit-identical to an uninterrupted run with the same seed.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "../../orchestrator/process.hpp"
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/run.hpp"
+
+namespace stride::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+const fs::path k_demo = fs::path(STRIDE_SOURCE_DIR) / "models" / "experiments" / "demo.xml";
+
+std::string read_all(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t count_lines(const std::string& s) {
+  return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
+}
+
+TEST(learner_closed_loop, a_few_rl_steps_with_the_real_fmus) {
+  temp_dir scratch("stride-learner-loop-");
+  run_options o;
+  o.output_dir = scratch.path() / "run";
+  o.progress = false;
+  o.build.log = stderr_log_sink(log_level::warning);
+  o.overrides = {"learner.total_steps=6", "learner.steps_per_episode=3",
+                 "learner.footsteps_per_step=2"};
+  const auto report = run_system(parse_system_file(k_demo), o);
+  EXPECT_TRUE(report.result.terminated_by_component);
+  EXPECT_EQ(report.result.terminated_by, "learner");
+  const fs::path out = report.output_dir;
+  EXPECT_EQ(count_lines(read_all(out / "steps.csv")), 7u);     // header + 6 steps
+  EXPECT_EQ(count_lines(read_all(out / "episodes.csv")), 3u);  // header + 2 episodes
+  EXPECT_EQ(count_lines(read_all(out / "v_table.csv")), 456u);
+  EXPECT_THAT(read_all(out / "best.txt"), HasSubstr("RL steps: 6, episodes: 2"));
+  EXPECT_THAT(read_all(out / "config.ini"), HasSubstr("balance_hip_roll_gain=0.000000"));
+  EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
+  EXPECT_THAT(read_all(out / "system.xml"), HasSubstr("${output_dir}"));  // kept for --resume
+  // the robot walked: some step measured a forward speed
+  std::istringstream steps(read_all(out / "steps.csv"));
+  std::string line;
+  std::getline(steps, line);
+  double max_speed = 0;
+  while (std::getline(steps, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+    max_speed = std::max(max_speed, std::stod(cells[9]));
+  }
+  EXPECT_GT(max_speed, 3.0) << "cm/s";
+}
+
+class learner_resume : public ::testing::Test {
+ protected:
+  temp_dir scratch{"stride-learner-resume-"};
+  test::process_result stride(const std::string& args) {
+    return test::run_command("'" + std::string(STRIDE_CLI) + "' " + args, scratch.path());
+  }
+  // short episodes (3 RL steps of 1 footstep) so a kill at step 11 is mid-episode 4
+  const std::string sets =
+      " --set learner.total_steps=20 --set learner.steps_per_episode=3"
+      " --set learner.footsteps_per_step=1 --set learner.seed=5 --quiet --no-plots";
+};
+
+TEST_F(learner_resume, a_killed_and_resumed_run_equals_an_uninterrupted_one) {
+  const fs::path full = scratch.path() / "full", killed = scratch.path() / "killed";
+  auto r = stride("run -o " + test::quoted(full) + sets);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  r = stride("run -o " + test::quoted(killed) + sets + " --set learner.kill_at_step=11");
+  ASSERT_NE(r.exit_code, 0) << "the test hook did not kill the run";
+  ASSERT_TRUE(fs::exists(killed / "checkpoint.bin"));
+  ASSERT_FALSE(fs::exists(killed / "v_table.csv"));
+  // the logs hold rows written after the checkpoint, which the resume must drop
+  r = stride("run --resume " + test::quoted(killed) + " --quiet --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  for (const char* file :
+       {"v_table.csv", "episodes.csv", "steps.csv", "paths.csv", "best.txt", "config.ini"}) {
+    const std::string a = read_all(full / file), b = read_all(killed / file);
+    EXPECT_FALSE(a.empty()) << file;
+    EXPECT_EQ(a, b) << file << " differs after the resume";
+  }
+  EXPECT_TRUE(fs::exists(killed / "results-resumed.csv"));  // the first part is kept
+  EXPECT_THAT(read_all(killed / "manifest.json"), HasSubstr("\"resumed_from\""));
+}
+
+TEST_F(learner_resume, resuming_a_system_without_resume_placeholder_is_an_error) {
+  const fs::path dir = scratch.path() / "walk";
+  fs::create_directories(dir);
+  const auto r = stride("run " + test::quoted(fs::path(STRIDE_SOURCE_DIR) / "models" / "walk.xml") +
+                        " --resume " + test::quoted(dir) + " --quiet");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("uses ${resume}"));
+}
+
+TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
+  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "gnuplot is not installed (gnuplot-nox)";
+  }
+  // a small learner run folder, written by hand, and two evaluation folders
+  const fs::path run = scratch.path() / "run";
+  fs::create_directories(run / "P1");
+  fs::create_directories(run / "P2");
+  std::ofstream(run / "v_table.csv") << "period_time,swing_right_left,V\n"
+                                        "450,15,1\n465,15,2\n450,17,-3\n465,17,40\n";
+  std::ofstream(run / "v_snapshot_2.csv") << "period_time,swing_right_left,V\n"
+                                             "450,15,0\n465,15,1\n450,17,0\n465,17,2\n";
+  std::ofstream(run / "best.txt") << "best state: period_time = 465, swing_right_left = 17\n"
+                                     "RL steps: 4, episodes: 2, falls: 0\n";
+  std::ofstream(run / "episodes.csv")
+      << "episode,steps,falls,reward,sum_abs_dv,start_period_time,start_swing_right_left,"
+         "rl_step,time,complete\n1,2,0,10,5,450,15,2,3.1,1\n2,2,1,-390,40,465,17,4,6.0,1\n";
+  std::ofstream(run / "paths.csv") << "episode,rl_step,time,x,y,fallen\n1,0,0.3,0.01,0,0\n"
+                                      "1,1,0.6,0.05,0.01,0\n2,2,0.9,0.02,0,1\n2,3,1.2,0.04,0,0\n";
+  for (const char* p : {"P1", "P2"}) {
+    std::ofstream(run / p / "evaluation.csv")
+        << "period_time,swing_right_left,windows,falls,distance,measured_time,mean_speed,"
+           "sim_time\n600,20,10,1,1.2,12,10,15\n";
+    std::ofstream(run / p / "paths.csv") << "episode,rl_step,time,x,y,fallen\n1,0,0.3,0.01,0,0\n"
+                                            "1,1,0.6,0.05,0.01,0\n";
+  }
+  const auto r = stride("plot " + test::quoted(run));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("best state: period_time = 465, swing_right_left = 17"));
+  EXPECT_THAT(r.out, HasSubstr("P2 (period_time = 600, swing_right_left = 20): 10 windows"));
+  for (const char* png : {"v_heatmap.png", "v_heatmap_2.png", "v_profile.png", "convergence.png",
+                          "reward.png", "paths.png", "evaluation.png", "eval_paths.png"}) {
+    EXPECT_GT(fs::exists(run / "figures" / png) ? fs::file_size(run / "figures" / png) : 0u, 1000u)
+        << png;
+  }
+  fs::create_directories(scratch.path() / "empty");
+  const auto empty = stride("plot " + test::quoted(scratch.path() / "empty"));
+  EXPECT_EQ(empty.exit_code, 1);
+  EXPECT_THAT(empty.err, HasSubstr("no learner artefacts"));
+}
+
+}  // namespace
+}  // namespace stride::cosim

@@ -1,0 +1,477 @@
+// The learner core without FMI: grid parsing, RNG, TD(lambda) against hand-computed values,
+// epsilon-greedy statistics, reward, episode rules, determinism and checkpoints.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "stride/learner/artefacts.hpp"
+#include "stride/learner/session.hpp"
+
+namespace stride::learner {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const learner_error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// ---------------------------------------------------------------------------------------------
+// grid
+
+TEST(learner_grid, parses_the_paper_grid_of_455_states) {
+  const auto g = state_grid::parse("period_time:450:960:15, swing_right_left:15:39:2");
+  ASSERT_EQ(g.dimension_count(), 2u);
+  EXPECT_EQ(g.dimensions()[0].count, 35);
+  EXPECT_EQ(g.dimensions()[1].count, 13);
+  EXPECT_EQ(g.size(), 455u);
+  EXPECT_EQ(g.values(0), (std::vector<double>{450, 15}));
+  EXPECT_EQ(g.values(454), (std::vector<double>{960, 39}));
+  // the first dimension runs fastest
+  EXPECT_EQ(g.values(1), (std::vector<double>{465, 15}));
+  EXPECT_EQ(g.values(35), (std::vector<double>{450, 17}));
+  EXPECT_EQ(g.find({600, 21}, "p"), g.index({10, 3}));
+  EXPECT_EQ(g.str(), "period_time:450:960:15,swing_right_left:15:39:2");
+}
+
+TEST(learner_grid, decimal_steps_give_exact_decimal_values) {
+  const auto g = state_grid::parse("dsp_ratio:0.1:0.5:0.1");
+  ASSERT_EQ(g.size(), 5u);
+  EXPECT_EQ(g.dimensions()[0].value(2), 0.3);
+  EXPECT_EQ(g.dimensions()[0].value(4), 0.5);
+}
+
+TEST(learner_grid, four_dimensions_and_clamped_neighbours) {
+  const auto g = state_grid::parse("a:0:2:1;b:0:1:1;c:0:2:1;d:5:5:1");
+  EXPECT_EQ(g.size(), 18u);
+  const std::size_t corner = g.index({2, 1, 0, 0});
+  EXPECT_EQ(g.neighbour(corner, 0, +1), corner);  // clamped at the edge
+  EXPECT_EQ(g.neighbour(corner, 1, +1), corner);
+  EXPECT_EQ(g.neighbour(corner, 0, -1), g.index({1, 1, 0, 0}));
+  EXPECT_EQ(g.neighbour(corner, 2, +1), g.index({2, 1, 1, 0}));
+  EXPECT_EQ(g.neighbour(corner, 3, -1), corner);
+}
+
+TEST(learner_grid, bad_grid_strings_are_errors_naming_the_fault) {
+  EXPECT_THAT(error_of([] { state_grid::parse(""); }), HasSubstr("grid: empty"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:960"); }),
+              HasSubstr("'period_time:450:960': expected name:min:max:step"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:abc:15"); }),
+              HasSubstr("max: 'abc' is not a finite number"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:960:0"); }),
+              HasSubstr("step must be > 0"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:960:450:15"); }),
+              HasSubstr("max < min"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:960:16"); }),
+              HasSubstr("is not a whole number"));
+  EXPECT_THAT(error_of([] { state_grid::parse("a:0:1:1,a:0:1:1"); }),
+              HasSubstr("parameter 'a' repeated"));
+  EXPECT_THAT(error_of([] { state_grid::parse("a:0:1:1,b:0:1:1,c:0:1:1,d:0:1:1,e:0:1:1"); }),
+              HasSubstr("more than 4 dimensions"));
+  EXPECT_THAT(error_of([] { state_grid::parse("a b:0:1:1"); }), HasSubstr("not a valid name"));
+  EXPECT_THAT(error_of([] { state_grid::parse("a:0:1:1,,b:0:1:1"); }),
+              HasSubstr("empty dimension"));
+}
+
+TEST(learner_grid, out_of_range_gait_parameters_are_errors_naming_the_parameter) {
+  EXPECT_THAT(error_of([] { check_grid_against_gait(state_grid::parse("period_time:0:900:15")); }),
+              HasSubstr("grid dimension period_time: walking parameter 'period_time' = 0"));
+  EXPECT_THAT(
+      error_of([] { check_grid_against_gait(state_grid::parse("swing_right_left:-4:30:2")); }),
+      HasSubstr("swing_right_left"));
+  EXPECT_THAT(error_of([] { check_grid_against_gait(state_grid::parse("dsp_ratio:0.5:1:0.5")); }),
+              HasSubstr("dsp_ratio"));
+  // a parameter the gait does not know is passed on unchecked (it may drive anything)
+  EXPECT_NO_THROW(check_grid_against_gait(state_grid::parse("something_else:-5:5:1")));
+  EXPECT_THAT(error_of([] { parse_config_overrides("balance_knee_gain=x", "config_overrides"); }),
+              HasSubstr("config_overrides balance_knee_gain: 'x' is not a finite number"));
+  EXPECT_THAT(error_of([] { parse_config_overrides("no_such_key=1", "config_overrides"); }),
+              HasSubstr("'no_such_key' is not a [Walking Config] key"));
+}
+
+TEST(learner_grid, settings_out_of_range_are_errors_naming_the_setting) {
+  learner_config c;
+  EXPECT_NO_THROW(c.validate());
+  c.td.alpha = 1.5;
+  EXPECT_THAT(error_of([&] { c.validate(); }), HasSubstr("alpha: must be in (0, 1]"));
+  c = learner_config{};
+  c.epsilon = -0.1;
+  EXPECT_THAT(error_of([&] { c.validate(); }), HasSubstr("epsilon"));
+  c = learner_config{};
+  c.mode = learner_mode::evaluate;
+  c.eval_point = {600};
+  EXPECT_THAT(error_of([&] { c.validate(); }), HasSubstr("eval_point: needs one value per grid"));
+  EXPECT_THAT(error_of([] { parse_step_list("100,x", "snapshot_steps"); }),
+              HasSubstr("snapshot_steps: 'x' is not a positive whole number"));
+  EXPECT_EQ(parse_step_list("300, 100,100", "s"), (std::vector<std::int64_t>{100, 300}));
+}
+
+// ---------------------------------------------------------------------------------------------
+// random numbers
+
+TEST(learner_rng, same_seed_same_sequence_and_uniform_ranges) {
+  rng_state a = seed_rng(42), b = seed_rng(42), c = seed_rng(43);
+  bool differs = false;
+  for (int i = 0; i < 100; ++i) {
+    const auto x = next_u64(a);
+    EXPECT_EQ(x, next_u64(b));
+    differs = differs || x != next_u64(c);
+  }
+  EXPECT_TRUE(differs);
+  std::map<std::uint64_t, int> counts;
+  for (int i = 0; i < 70000; ++i) {
+    const auto k = uniform_below(a, 7);
+    ASSERT_LT(k, 7u);
+    ++counts[k];
+    const double u = uniform01(a);
+    ASSERT_GE(u, 0.0);
+    ASSERT_LT(u, 1.0);
+  }
+  for (const auto& [k, n] : counts) {
+    EXPECT_NEAR(n, 10000, 400) << k;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// TD(lambda)
+
+TEST(learner_td, update_matches_hand_computed_values_on_a_3x3_grid) {
+  const auto g = state_grid::parse("a:0:2:1,b:0:2:1");
+  dense_value_table v(g.size(), 0.0);
+  eligibility_traces z;
+  const td_params p{0.1, 0.9, 0.5};  // gamma * lambda = 0.45
+  const std::size_t s0 = g.index({0, 0}), s1 = g.index({1, 0}), s2 = g.index({1, 1});
+
+  // step 1: s0 -> s1, r = 10: delta = 10; Z(s0) = 1; V(s0) = 1; Z(s0) = 0.45
+  EXPECT_DOUBLE_EQ(td_lambda_update(v, z, s0, 10.0, s1, p), 10.0);
+  EXPECT_DOUBLE_EQ(v.get(s0), 1.0);
+  // step 2: s1 -> s2, r = 5: delta = 5 + 0.9*0 - 0 = 5; Z(s1) = 1
+  //   V(s0) = 1 + 0.1*5*0.45 = 1.225; V(s1) = 0.5; Z(s0) = 0.2025, Z(s1) = 0.45
+  EXPECT_DOUBLE_EQ(td_lambda_update(v, z, s1, 5.0, s2, p), 5.0);
+  EXPECT_DOUBLE_EQ(v.get(s0), 1.225);
+  EXPECT_DOUBLE_EQ(v.get(s1), 0.5);
+  // step 3: s2 -> s1, r = -400: delta = -400 + 0.9*0.5 - 0 = -399.55; Z(s2) = 1
+  //   V(s0) = 1.225 + 0.1*(-399.55)*0.2025 = -6.8658875
+  //   V(s1) = 0.5 + 0.1*(-399.55)*0.45 = -17.47975
+  //   V(s2) = 0 + 0.1*(-399.55)*1 = -39.955
+  EXPECT_DOUBLE_EQ(td_lambda_update(v, z, s2, -400.0, s1, p), -399.55);
+  EXPECT_NEAR(v.get(s0), -6.8658875, 1e-12);
+  EXPECT_NEAR(v.get(s1), -17.47975, 1e-12);
+  EXPECT_NEAR(v.get(s2), -39.955, 1e-12);
+  // untouched states stay 0, the traces decayed once more
+  for (std::size_t s = 0; s < g.size(); ++s) {
+    if (s != s0 && s != s1 && s != s2) {
+      EXPECT_EQ(v.get(s), 0.0);
+    }
+  }
+  ASSERT_EQ(z.entries.size(), 3u);
+  EXPECT_NEAR(z.entries[0].z, 0.45 * 0.45 * 0.45, 1e-15);
+  // a revisit accumulates: Z(s1) = 0.45*0.45 + 1 before the update
+  td_lambda_update(v, z, s1, 0.0, s1, p);
+  EXPECT_NEAR(z.entries[1].z, (0.45 * 0.45 + 1) * 0.45, 1e-15);
+  // sum |dV| since the traces were cleared
+  EXPECT_NEAR(sum_abs_value_change(v, z),
+              std::abs(v.get(s0)) + std::abs(v.get(s1)) + std::abs(v.get(s2)), 1e-12);
+}
+
+TEST(learner_td, actions_and_successors_on_a_3x3_grid) {
+  const auto g = state_grid::parse("a:0:2:1,b:0:2:1");
+  ASSERT_EQ(action_count(g), 5u);
+  const std::size_t c = g.index({1, 1});
+  EXPECT_EQ(successor(g, c, 0), c);
+  EXPECT_EQ(successor(g, c, 1), g.index({2, 1}));
+  EXPECT_EQ(successor(g, c, 2), g.index({0, 1}));
+  EXPECT_EQ(successor(g, c, 3), g.index({1, 2}));
+  EXPECT_EQ(successor(g, c, 4), g.index({1, 0}));
+  EXPECT_EQ(successor(g, g.index({2, 2}), 1), g.index({2, 2}));  // clamped
+}
+
+TEST(learner_td, epsilon_greedy_statistics) {
+  const auto g = state_grid::parse("a:0:2:1,b:0:2:1");
+  dense_value_table v(g.size(), 0.0);
+  const std::size_t c = g.index({1, 1});
+  v.add(g.index({2, 1}), 5.0);  // action 1 is the unique greedy one
+  rng_state rng = seed_rng(7);
+  const int n = 40000;
+  std::map<std::size_t, int> counts;
+  for (int i = 0; i < n; ++i) ++counts[choose_epsilon_greedy(v, g, c, 0.2, rng)];
+  // greedy with 1 - eps + eps/5 = 0.84, every other action eps/5 = 0.04
+  EXPECT_NEAR(counts[1] / double(n), 0.84, 0.01);
+  for (std::size_t a : {0u, 2u, 3u, 4u}) {
+    EXPECT_NEAR(counts[a] / double(n), 0.04, 0.006) << a;
+  }
+
+  // epsilon 0: ties are broken uniformly
+  counts.clear();
+  dense_value_table flat(g.size(), 0.0);
+  for (int i = 0; i < n; ++i) ++counts[choose_epsilon_greedy(flat, g, c, 0.0, rng)];
+  for (std::size_t a = 0; a < 5; ++a) {
+    EXPECT_NEAR(counts[a] / double(n), 0.2, 0.01) << a;
+  }
+  // ... among the best only
+  flat.add(g.index({0, 1}), 1.0);
+  flat.add(g.index({1, 0}), 1.0);
+  counts.clear();
+  for (int i = 0; i < n; ++i) ++counts[choose_epsilon_greedy(flat, g, c, 0.0, rng)];
+  EXPECT_EQ(counts[0] + counts[1] + counts[3], 0);
+  EXPECT_NEAR(counts[2] / double(n), 0.5, 0.015);
+}
+
+TEST(learner_td, reward_formula) {
+  const reward_params p{0.33, 10.0, -400.0};
+  EXPECT_DOUBLE_EQ(step_reward(0.0, false, p), 0.33);
+  EXPECT_DOUBLE_EQ(step_reward(10.0, false, p), 3.3);
+  EXPECT_NEAR(step_reward(20.0, false, p), 33.0, 1e-12);
+  EXPECT_NEAR(step_reward(15.0, false, p), 0.33 * std::pow(10.0, 1.5), 1e-12);
+  EXPECT_EQ(step_reward(25.0, true, p), -400.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// episodes, with a scripted plant: one footstep per call, speed from the state, falls on demand
+
+struct scripted_plant {
+  double x = 0;
+  int footsteps = 0;
+  bool fallen = false;
+  int seen_restarts = 0;
+  // m per footstep of a state's values; a fall when fall(values) is true
+  std::function<double(const std::vector<double>&)> stride = [](auto&) { return 0.05; };
+  std::function<bool(const std::vector<double>&)> fall = [](auto&) { return false; };
+
+  plant_inputs step(const session& s, const session_state& st) {
+    if (st.restarts != seen_restarts) {
+      seen_restarts = st.restarts;
+      x = 0;
+      footsteps = 0;
+      fallen = false;
+      return {x, 0, fallen, footsteps};
+    }
+    const auto values = s.current_values();
+    if (fall(values)) {
+      fallen = true;
+    } else {
+      ++footsteps;
+      x += stride(values);
+    }
+    return {x, 0, fallen, footsteps};
+  }
+};
+
+struct run_result {
+  std::vector<step_record> steps;
+  std::vector<episode_record> episodes;
+  std::vector<double> values;
+};
+
+run_result run_scripted(learner_config c, scripted_plant plant, int max_calls = 100000) {
+  session_state st;
+  dense_value_table v(c.grid.size(), c.initial_value);
+  eligibility_traces z;
+  session s(c, st, v, z);
+  s.start();
+  plant.seen_restarts = st.restarts - 1;  // the first call returns the fresh plant
+  run_result out;
+  for (int i = 0; i < max_calls; ++i) {
+    const auto in = plant.step(s, st);
+    const auto r = s.advance(in, 300'000'000);
+    if (r.step) out.steps.push_back(*r.step);
+    if (r.episode) out.episodes.push_back(*r.episode);
+    if (r.finished) break;
+    if (r.episode) s.begin_episode();
+  }
+  out.values = v.values();
+  return out;
+}
+
+learner_config small_config() {
+  learner_config c;
+  c.grid = state_grid::parse("period_time:450:750:50,swing_right_left:15:35:5");
+  c.footsteps_per_step = 2;
+  c.settle_footsteps = 1;
+  return c;
+}
+
+TEST(learner_session, an_episode_ends_after_40_steps) {
+  learner_config c = small_config();
+  c.total_steps = 120;
+  const auto r = run_scripted(c, scripted_plant{});
+  ASSERT_EQ(r.episodes.size(), 3u);
+  for (const auto& e : r.episodes) {
+    EXPECT_EQ(e.steps, 40);
+    EXPECT_EQ(e.falls, 0);
+    EXPECT_TRUE(e.complete);
+  }
+  EXPECT_EQ(r.steps.size(), 120u);
+  // W = 2 footsteps of 0.05 m in 2 * 0.3 s: 8.333 cm/s
+  EXPECT_NEAR(r.steps[0].speed, 100 * 0.1 / 0.6, 1e-9);
+  EXPECT_NEAR(r.steps[0].reward, 0.33 * std::pow(10.0, r.steps[0].speed / 10), 1e-12);
+  EXPECT_EQ(r.episodes[1].rl_step, 80);
+}
+
+TEST(learner_session, an_episode_ends_after_10_falls) {
+  learner_config c = small_config();
+  c.total_steps = 30;
+  c.epsilon = 0;
+  scripted_plant p;
+  p.fall = [](const std::vector<double>& v) { return v[1] >= 25; };  // half the grid falls
+  const auto r = run_scripted(c, p);
+  ASSERT_FALSE(r.episodes.empty());
+  int falls = 0;
+  for (const auto& s : r.steps) {
+    if (s.fell) {
+      ++falls;
+      EXPECT_EQ(s.reward, -400.0);
+      EXPECT_EQ(s.speed, 0.0);
+    }
+  }
+  EXPECT_GT(falls, 0);
+  for (const auto& e : r.episodes) {
+    EXPECT_TRUE(e.steps == 40 || e.falls == 10 || !e.complete)
+        << "episode " << e.episode << ": " << e.steps << " steps, " << e.falls << " falls";
+  }
+  // a plant that always falls: 10 steps, 10 falls per episode
+  scripted_plant always;
+  always.fall = [](auto&) { return true; };
+  const auto r2 = run_scripted(c, always);
+  ASSERT_GE(r2.episodes.size(), 2u);
+  EXPECT_EQ(r2.episodes[0].steps, 10);
+  EXPECT_EQ(r2.episodes[0].falls, 10);
+  EXPECT_EQ(r2.episodes[0].reward, -4000.0);
+}
+
+TEST(learner_session, same_seed_gives_an_identical_value_table) {
+  learner_config c = small_config();
+  c.total_steps = 2000;
+  scripted_plant p;
+  p.stride = [](const std::vector<double>& v) { return 0.03 + 0.0001 * (v[0] - 450) / v[1]; };
+  p.fall = [](const std::vector<double>& v) { return v[0] == 450 && v[1] == 35; };
+  const auto a = run_scripted(c, p), b = run_scripted(c, p);
+  ASSERT_EQ(a.values.size(), b.values.size());
+  EXPECT_EQ(0, std::memcmp(a.values.data(), b.values.data(), a.values.size() * sizeof(double)));
+  c.seed = 2;
+  const auto other = run_scripted(c, p);
+  EXPECT_NE(0, std::memcmp(a.values.data(), other.values.data(), a.values.size() * sizeof(double)));
+}
+
+TEST(learner_session, evaluation_mode_measures_without_learning) {
+  learner_config c = small_config();
+  c.mode = learner_mode::evaluate;
+  c.eval_point = {600, 20};
+  c.total_steps = 10;
+  session_state st;
+  dense_value_table v(c.grid.size());
+  eligibility_traces z;
+  session s(c, st, v, z);
+  s.start();
+  EXPECT_EQ(s.current_values(), (std::vector<double>{600, 20}));
+  scripted_plant p;
+  p.seen_restarts = st.restarts - 1;
+  int steps = 0;
+  for (int i = 0; i < 1000 && s.phase() != walk_phase::finished; ++i) {
+    if (s.advance(p.step(s, st), 300'000'000).step) ++steps;
+  }
+  EXPECT_EQ(steps, 10);
+  EXPECT_NEAR(st.eval_distance, 10 * 0.1, 1e-12);
+  EXPECT_NEAR(st.eval_time, 10 * 0.6, 1e-9);
+  for (double x : v.values()) {
+    EXPECT_EQ(x, 0.0);
+  }
+}
+
+TEST(learner_session, a_plant_without_footsteps_or_reset_is_an_error) {
+  learner_config c = small_config();
+  c.step_timeout = 5;
+  session_state st;
+  dense_value_table v(c.grid.size());
+  eligibility_traces z;
+  session s(c, st, v, z);
+  s.start();
+  std::string e = error_of([&] {
+    for (int i = 0; i < 100; ++i) s.advance(plant_inputs{}, 300'000'000);
+  });
+  EXPECT_THAT(e, HasSubstr("gait.footsteps"));
+  s.start();
+  plant_inputs fallen;
+  fallen.fallen = true;
+  e = error_of([&] {
+    for (int i = 0; i < 3; ++i) s.advance(fallen, 300'000'000);
+  });
+  EXPECT_THAT(e, HasSubstr("robot.reset"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// checkpoints
+
+TEST(learner_checkpoint, round_trip_and_configuration_check) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("stride-learner-ck-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  checkpoint c;
+  c.config = small_config().canonical();
+  c.state = {std::byte{1}, std::byte{2}, std::byte{3}};
+  c.values = {1.5, -400, 0.1};
+  c.traces = {{2, 0.45, -1.0}};
+  c.file_sizes = {{"episodes.csv", 1234}};
+  write_checkpoint(dir / "checkpoint.bin", c);
+  EXPECT_FALSE(fs::exists(dir / "checkpoint.bin.tmp"));
+  const checkpoint r = read_checkpoint(dir / "checkpoint.bin");
+  EXPECT_EQ(r.config, c.config);
+  EXPECT_EQ(r.state, c.state);
+  EXPECT_EQ(r.values, c.values);
+  ASSERT_EQ(r.traces.size(), 1u);
+  EXPECT_EQ(r.traces[0].z, 0.45);
+  EXPECT_EQ(r.file_sizes.at("episodes.csv"), 1234u);
+
+  learner_config other = small_config();
+  other.td.alpha = 0.2;
+  EXPECT_THAT(error_of([&] { check_checkpoint_config(c.config, other.canonical(), "ck"); }),
+              HasSubstr("written with alpha = 0.1, this run has alpha = 0.2"));
+  // truncated and foreign files
+  fs::resize_file(dir / "checkpoint.bin", 30);
+  EXPECT_THAT(error_of([&] { read_checkpoint(dir / "checkpoint.bin"); }), HasSubstr("truncated"));
+  std::ofstream(dir / "other.bin") << "hello world";
+  EXPECT_THAT(error_of([&] { read_checkpoint(dir / "other.bin"); }),
+              HasSubstr("not a learner checkpoint"));
+  fs::remove_all(dir);
+}
+
+TEST(learner_artefacts, best_config_applies_the_best_state_to_the_base) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("stride-learner-best-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const auto g = state_grid::parse("period_time:450:960:15,swing_right_left:15:39:2");
+  dense_value_table v(g.size());
+  v.add(g.find({645, 29}, "t"), 10.0);
+  const best_summary b = summarize_best(g, v, 1);
+  EXPECT_EQ(b.best_values, (std::vector<double>{645, 29}));
+  EXPECT_THAT(b.text, HasSubstr("period_time = 645, swing_right_left = 29"));
+  write_best_config(dir / "config.ini",
+                    STRIDE_SOURCE_DIR "/components/gait_fmu/resources/config.ini",
+                    parse_config_overrides("balance_hip_roll_gain=0", "o"), g, b.best_values);
+  std::ifstream in(dir / "config.ini");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_THAT(text.str(), HasSubstr("period_time=645.000000"));
+  EXPECT_THAT(text.str(), HasSubstr("swing_right_left=29.000000"));
+  EXPECT_THAT(text.str(), HasSubstr("balance_hip_roll_gain=0.000000"));
+  EXPECT_THAT(text.str(), HasSubstr("balance_ankle_roll_gain=1.000000"));  // from the base
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace stride::learner
