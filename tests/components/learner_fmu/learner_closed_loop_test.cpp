@@ -110,9 +110,8 @@ TEST_F(learner_resume, resuming_a_system_without_resume_placeholder_is_an_error)
 }
 
 TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
-  if (std::system("gnuplot --version > /dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "gnuplot is not installed (gnuplot-nox)";
-  }
+  // scripts/install-deps.sh installs gnuplot-nox: without it `stride plot` cannot work
+  ASSERT_EQ(std::system("gnuplot --version > /dev/null 2>&1"), 0) << "gnuplot is not installed";
   // a small learner run folder, written by hand, and two evaluation folders
   const fs::path run = scratch.path() / "run";
   fs::create_directories(run / "P1");
