@@ -34,6 +34,9 @@ robot_config default_config(const std::string& urdf_path) {
   // arms (3..6) and head (19, 20) hold constant targets while walking: welding them halves the
   // cost of a physics step
   c.rigid_servos = {3, 4, 5, 6, 19, 20};
+  // Webots' basicTimeStep for the DARwIn-OP worlds the paper used: the gait ticks twice per
+  // physics step and the plant sees the second target, as in Webots (models/darwin-op/README.md)
+  c.physics_step = k_physics_step;
   c.imu_link = "imu_link";
   c.left_foot_link = "l_ank_roll_link";
   c.right_foot_link = "r_ank_roll_link";

@@ -30,11 +30,15 @@ inline constexpr double k_walk_ready_lean_deg = 12.94;
 /// Servo P gain of the DARwIn profile, 1/s (Webots: 10; see models/darwin-op/README.md).
 inline constexpr double k_servo_p_gain = 18.0;
 
+/// Physics step of the DARwIn profile, s: Webots' basicTimeStep in the DARwIn-OP worlds.
+inline constexpr double k_physics_step = 0.016;
+
 /// The plant configuration used by the framework for the DARwIn-OP (models/darwin-op/README.md):
-/// fact-sheet physics and contacts, physics step 8 ms (the gait tick), walk-ready start pose,
-/// IMU/feet links of models/darwin-op/darwin-op.urdf. Departures from the robot_config defaults:
-/// servo p_gain = k_servo_p_gain with no acceleration limit, and rigid_servos = {3, 4, 5, 6, 19,
-/// 20} (arms and head welded in the walk-ready pose; clear it to drive all 20 servos).
+/// fact-sheet physics and contacts, walk-ready start pose, IMU/feet links of
+/// models/darwin-op/darwin-op.urdf. Departures from the robot_config defaults: physics_step =
+/// k_physics_step, servo p_gain = k_servo_p_gain with no acceleration limit, and rigid_servos =
+/// {3, 4, 5, 6, 19, 20} (arms and head welded in the walk-ready pose; clear it to drive all 20
+/// servos).
 robot_config default_config(const std::string& urdf_path);
 
 }  // namespace stride::robot::darwin
