@@ -1,6 +1,7 @@
 // Full calibrations, from reading nothing but the target (already parsed) to the report:
-//  - joint mode: the walk-ready pose (page 9, all 20 servos) with all seven offsets, and a noisy
-//    synthetic posture with six offsets; target < 100 ms per fit;
+//  - joint mode: the walk-ready pose (page 9, all 20 servos) with all seven offsets, a noisy
+//    synthetic posture with six offsets, and the 27-posture plan with all seven; target < 100 ms
+//    per fit;
 //  - plant mode: torso pitch 0 (one offset), and pitch + height + CoM over the support polygon
 //    (three offsets) through gait.fmu + robot.fmu; target < 60 s per fit on one core.
 // Run: calibration_bench --benchmark_repetitions=5 (medians are reported with the aggregates).
@@ -26,7 +27,7 @@ calibration::joint_target walk_ready() {
   return parse_joint_target(csv, "walk_ready.csv");
 }
 
-calibration::joint_target noisy_synthetic(gait::ik_mode mode) {
+gait::walking_params synthetic_truth() {
   gait::walking_params p;
   p.x_offset = -7.3;
   p.y_offset = 8.1;
@@ -34,15 +35,33 @@ calibration::joint_target noisy_synthetic(gait::ik_mode mode) {
   p.roll_offset = 1.7;
   p.yaw_offset = 3.1;
   p.hip_pitch_offset = 10.6;
-  std::array<double, gait::servo_total> c;
-  gait::standing_servo_counts(gait::standing_params<double>::from(p), mode, c);
+  return p;
+}
+
+// the leg servos of `p` moved by each delta of `plan`, whole counts with -1/0/+1 count noise
+calibration::joint_target noisy_synthetic(gait::ik_mode mode,
+                                          const std::vector<offset_values>& plan = {{}}) {
   std::mt19937 rng(1);
-  std::string csv = "id,count\n";
-  for (int id = 7; id <= 18; ++id)
-    csv += std::to_string(id) + "," +
-           std::to_string(std::lround(c[static_cast<std::size_t>(id - 1)]) +
-                          static_cast<long>(rng() % 3) - 1) +
-           "\n";
+  std::string csv;
+  for (const offset_info& o : offset_table()) csv += "delta_" + std::string(o.key) + ",";
+  csv += "id,count\n";
+  for (const offset_values& delta : plan) {
+    gait::walking_params p = synthetic_truth();
+    offset_values v = get_offsets(p);
+    std::string prefix;
+    for (std::size_t k = 0; k < offset_count; ++k) {
+      v[k] += delta[k];
+      prefix += std::to_string(delta[k]) + ",";
+    }
+    set_offsets(p, v);
+    std::array<double, gait::servo_total> c;
+    gait::standing_servo_counts(gait::standing_params<double>::from(p), mode, c);
+    for (int id = 7; id <= 18; ++id)
+      csv += prefix + std::to_string(id) + "," +
+             std::to_string(std::lround(c[static_cast<std::size_t>(id - 1)]) +
+                            static_cast<long>(rng() % 3) - 1) +
+             "\n";
+  }
   return parse_joint_target(csv, "synthetic.csv");
 }
 
@@ -73,6 +92,11 @@ void joint_synthetic_six_geometric(benchmark::State& state) {
   joint_fit(state, noisy_synthetic(gait::ik_mode::geometric), o);
 }
 
+void joint_posture_plan_all_seven_darwin(benchmark::State& state) {
+  joint_fit(state, noisy_synthetic(gait::ik_mode::darwin, recommended_posture_plan()),
+            fit_options{});
+}
+
 void plant_fit(benchmark::State& state, const char* target_text) {
   const plant_target target = parse_plant_target(target_text, "bench.ini");
   plant_options p;
@@ -99,5 +123,6 @@ void plant_pitch_height_com(benchmark::State& state) {
 BENCHMARK(joint_walk_ready_all_seven)->Unit(benchmark::kMillisecond);
 BENCHMARK(joint_synthetic_six_darwin)->Unit(benchmark::kMillisecond);
 BENCHMARK(joint_synthetic_six_geometric)->Unit(benchmark::kMillisecond);
+BENCHMARK(joint_posture_plan_all_seven_darwin)->Unit(benchmark::kMillisecond);
 BENCHMARK(plant_pitch_zero)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(plant_pitch_height_com)->Unit(benchmark::kSecond)->Iterations(1);

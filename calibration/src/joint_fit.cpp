@@ -19,23 +19,25 @@ bool is_leg_servo(int id) {
   return id >= 7 && id <= 18;
 }
 
-// One joint: the untruncated standing servo count of the gait minus the target count.
+// One joint of one posture: the untruncated standing servo count of the gait with the offsets
+// plus the posture's deltas, minus the target count.
 struct joint_residual {
   int index;  // servo ID - 1
   double target;
+  offset_values delta;
   gait::ik_mode mode;
   gait::walking_params base;
 
   template <class T>
   bool operator()(const T* const offsets, T* residual) const {
     gait::standing_params<T> p = gait::standing_params<T>::from(base);
-    p.x_offset = offsets[0];
-    p.y_offset = offsets[1];
-    p.z_offset = offsets[2];
-    p.roll_offset = offsets[3];
-    p.pitch_offset = offsets[4];
-    p.yaw_offset = offsets[5];
-    p.hip_pitch_offset = offsets[6];
+    p.x_offset = offsets[0] + delta[0];
+    p.y_offset = offsets[1] + delta[1];
+    p.z_offset = offsets[2] + delta[2];
+    p.roll_offset = offsets[3] + delta[3];
+    p.pitch_offset = offsets[4] + delta[4];
+    p.yaw_offset = offsets[5] + delta[5];
+    p.hip_pitch_offset = offsets[6] + delta[6];
     std::array<T, gait::servo_total> counts;
     if (!gait::standing_servo_counts(p, mode, counts)) return false;
     residual[0] = counts[static_cast<std::size_t>(index)] - target;
@@ -43,9 +45,10 @@ struct joint_residual {
   }
 };
 
-std::array<double, gait::servo_total> model_counts(const gait::walking_params& p,
-                                                   gait::ik_mode mode) {
-  std::array<double, gait::servo_total> counts;
+using servo_counts = std::array<double, gait::servo_total>;
+
+servo_counts model_counts(const gait::walking_params& p, gait::ik_mode mode) {
+  servo_counts counts;
   if (!gait::standing_servo_counts(gait::standing_params<double>::from(p), mode, counts)) {
     std::string offsets;
     for (const offset_info& o : offset_table())
@@ -54,6 +57,21 @@ std::array<double, gait::servo_total> model_counts(const gait::walking_params& p
     throw std::domain_error("the standing foot targets are out of the leg's reach with " + offsets);
   }
   return counts;
+}
+
+// the gait's standing output for every posture of the target at the offsets of `p`
+std::vector<servo_counts> posture_counts(const joint_target& target, const gait::walking_params& p,
+                                         gait::ik_mode mode) {
+  std::vector<servo_counts> out;
+  const offset_values base = get_offsets(p);
+  for (const posture& q : target.postures) {
+    gait::walking_params moved = p;
+    offset_values v = base;
+    for (std::size_t k = 0; k < offset_count; ++k) v[k] += q.delta[k];
+    set_offsets(moved, v);
+    out.push_back(model_counts(moved, mode));
+  }
+  return out;
 }
 
 std::string servo_name(int id) {
@@ -80,10 +98,11 @@ calibration_report fit_joint_posture(const joint_target& target, const gait::wal
   const std::vector<std::size_t> fit = detail::selection(options, all);
   const offset_values start_values = get_offsets(start);
   detail::check_start(start_values, fit, options.bounds);
-  const auto before = model_counts(start, options.ik);
+  const auto before = posture_counts(target, start, options.ik);
   if (!(options.loss_scale > 0)) throw std::invalid_argument("the loss scale must be positive");
 
   calibration_report report = detail::start_report("joints", target.source, options.ik, start, fit);
+  report.postures = target.postures;
 
   std::array<double, offset_count> block = start_values;
   ceres::Problem problem;
@@ -92,7 +111,9 @@ calibration_report fit_joint_posture(const joint_target& target, const gait::wal
     if (!is_leg_servo(j.id)) continue;
     ++legs;
     auto* cost = new ceres::AutoDiffCostFunction<joint_residual, 1, static_cast<int>(offset_count)>(
-        new joint_residual{j.id - 1, j.count, options.ik, start});
+        new joint_residual{j.id - 1, j.count,
+                           target.postures[static_cast<std::size_t>(j.posture)].delta, options.ik,
+                           start});
     problem.AddResidualBlock(cost, new ceres::CauchyLoss(options.loss_scale), block.data());
   }
   if (legs == 0)
@@ -124,13 +145,15 @@ calibration_report fit_joint_posture(const joint_target& target, const gait::wal
   if (dof > 0) sigma2 = std::max(1.0, 2.0 * summary.final_cost / dof);
   detail::analyse(problem, block.data(), fit, options.bounds, std::sqrt(sigma2), report);
 
-  const auto after = model_counts(report.fitted, options.ik);
+  const auto after = posture_counts(target, report.fitted, options.ik);
   for (const joint_reading& j : target.joints) {
     joint_result r;
     r.id = j.id;
+    r.posture = j.posture;
     r.target = j.count;
-    r.model_before = before[static_cast<std::size_t>(j.id - 1)];
-    r.model_after = after[static_cast<std::size_t>(j.id - 1)];
+    const auto p = static_cast<std::size_t>(j.posture);
+    r.model_before = before[p][static_cast<std::size_t>(j.id - 1)];
+    r.model_after = after[p][static_cast<std::size_t>(j.id - 1)];
     r.fitted = is_leg_servo(j.id);
     if (r.fitted && std::abs(r.residual_after()) > 3.0 * options.loss_scale) {
       r.outlier = true;

@@ -61,9 +61,30 @@ std::string format_report(const calibration_report& r) {
                 sigma.c_str(), status.c_str());
   }
 
+  const bool several = r.postures.size() > 1;
+  if (several) {
+    out << "\n"
+        << line("%zu postures (target = gait output at the offsets + these deltas):",
+                r.postures.size());
+    for (std::size_t p = 0; p < r.postures.size(); ++p) {
+      std::string deltas;
+      for (std::size_t k = 0; k < offset_count; ++k) {
+        const double d = r.postures[p].delta[k];
+        if (d == 0.0) continue;
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%s%s %+g %s", deltas.empty() ? "" : ", ",
+                      std::string(offset_table()[k].key).c_str(), d,
+                      std::string(offset_table()[k].unit).c_str());
+        deltas += buf;
+      }
+      out << line("  P%-3zu from line %-5d %s", p + 1, r.postures[p].line,
+                  deltas.empty() ? "(no delta)" : deltas.c_str());
+    }
+  }
+
   if (!r.joints.empty()) {
     out << "\n"
-        << line("%-17s %9s %9s %8s %9s %8s  %s", "joint (counts)", "target", "before", "resid",
+        << line("%-22s %9s %9s %8s %9s %8s  %s", "joint (counts)", "target", "before", "resid",
                 "after", "resid", "");
     double sum_before = 0, sum_after = 0;
     int fitted = 0;
@@ -71,9 +92,13 @@ std::string format_report(const calibration_report& r) {
       std::string flag;
       if (!j.fitted) flag = "not fitted (no offset moves it)";
       if (j.outlier) flag = "outlier";
-      char name[32];
-      std::snprintf(name, sizeof name, "%2d %s", j.id, servo_names[j.id - 1]);
-      out << line("%-17s %9.1f %9.2f %+8.2f %9.2f %+8.2f  %s", name, j.target, j.model_before,
+      char name[40];
+      if (several)
+        std::snprintf(name, sizeof name, "P%-3d %2d %s", j.posture + 1, j.id,
+                      servo_names[j.id - 1]);
+      else
+        std::snprintf(name, sizeof name, "%2d %s", j.id, servo_names[j.id - 1]);
+      out << line("%-22s %9.1f %9.2f %+8.2f %9.2f %+8.2f  %s", name, j.target, j.model_before,
                   j.residual_before(), j.model_after, j.residual_after(), flag.c_str());
       if (j.fitted) {
         sum_before += j.residual_before() * j.residual_before();

@@ -5,6 +5,7 @@
 #include <iterator>
 #include <map>
 #include <numbers>
+#include <utility>
 
 #include "stride/gait/config_ini.hpp"
 #include "stride/gait/kinematics.hpp"
@@ -15,6 +16,7 @@ namespace stride::calibration {
 namespace {
 
 constexpr int k_max_servo_id = gait::servo_total;
+constexpr std::string_view k_delta_prefix = "delta_";
 
 std::string read_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -85,8 +87,9 @@ joint_target parse_joint_target(std::string_view text, const std::string& source
   std::vector<std::string_view> lines = detail::split(text, '\n');
   std::size_t columns = 0;
   std::size_t id_column = 0, value_column = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> delta_columns;  // (column, offset index)
   bool have_header = false;
-  std::map<int, int> first_line;  // servo ID -> line
+  std::map<std::pair<int, int>, int> first_line;  // (posture, servo ID) -> line
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const int line = static_cast<int>(i) + 1;
     const std::string_view body = detail::trim(lines[i]);
@@ -111,6 +114,19 @@ joint_target parse_joint_target(std::string_view text, const std::string& source
           target.unit = name == "count" ? angle_unit::count
                         : name == "deg" ? angle_unit::deg
                                         : angle_unit::rad;
+        } else if (name.starts_with(k_delta_prefix)) {
+          const std::string key = name.substr(k_delta_prefix.size());
+          const auto offset = find_offset(key);
+          if (!offset) {
+            std::string known;
+            for (const offset_info& o : offset_table())
+              known +=
+                  (known.empty() ? "" : ", ") + std::string(k_delta_prefix) + std::string(o.key);
+            fail(source, line, "unknown column '" + name + "' (known: " + known + ")");
+          }
+          for (const auto& [column, index] : delta_columns)
+            if (index == *offset) fail(source, line, "the header has column '" + name + "' twice");
+          delta_columns.emplace_back(c, *offset);
         }
       }
       if (!id || !unit_column) {
@@ -140,9 +156,23 @@ joint_target parse_joint_target(std::string_view text, const std::string& source
            "unknown servo ID " + std::to_string(*id) + " (DARwIn-OP servo IDs are 1.." +
                std::to_string(k_max_servo_id) + ")");
     const int servo = static_cast<int>(*id);
-    if (const auto it = first_line.find(servo); it != first_line.end())
+    offset_values delta{};
+    for (const auto& [column, index] : delta_columns) {
+      const std::string_view text = field(fields[column]);
+      const auto v = detail::parse_double(text);
+      const std::string name = std::string(k_delta_prefix) + std::string(offset_table()[index].key);
+      if (!v || !std::isfinite(*v))
+        fail(source, line, name + " '" + std::string(text) + "' is not a finite number");
+      delta[index] = *v;
+    }
+    std::size_t p = 0;
+    while (p < target.postures.size() && target.postures[p].delta != delta) ++p;
+    if (p == target.postures.size()) target.postures.push_back({delta, line});
+    const int posture = static_cast<int>(p);
+    if (const auto it = first_line.find({posture, servo}); it != first_line.end())
       fail(source, line,
-           "duplicate servo ID " + std::to_string(servo) + " (first on line " +
+           "duplicate servo ID " + std::to_string(servo) +
+               (delta_columns.empty() ? "" : " in one posture (same deltas)") + " (first on line " +
                std::to_string(it->second) + ")");
     const std::string_view value_text = field(fields[value_column]);
     const auto value = detail::parse_double(value_text);
@@ -157,19 +187,37 @@ joint_target parse_joint_target(std::string_view text, const std::string& source
       fail(source, line,
            "value " + std::string(value_text) + " " + std::string(to_string(target.unit)) +
                " of servo " + std::to_string(servo) + " is outside the servo range 0..4095 counts");
-    first_line.emplace(servo, line);
-    target.joints.push_back({servo, counts, line});
+    first_line.emplace(std::pair{posture, servo}, line);
+    target.joints.push_back({servo, counts, line, posture});
   }
   if (!have_header)
     throw target_error(source + ": empty target: no CSV header (id and one of count, deg, rad)");
   if (target.joints.empty()) throw target_error(source + ": empty target: no joint rows");
   std::sort(target.joints.begin(), target.joints.end(),
-            [](const joint_reading& a, const joint_reading& b) { return a.id < b.id; });
+            [](const joint_reading& a, const joint_reading& b) {
+              return std::pair{a.posture, a.id} < std::pair{b.posture, b.id};
+            });
   return target;
 }
 
 joint_target read_joint_target(const std::filesystem::path& file) {
   return parse_joint_target(read_file(file), file.string());
+}
+
+std::vector<offset_values> recommended_posture_plan() {
+  const std::size_t x = *find_offset("x_offset"), y = *find_offset("y_offset"),
+                    z = *find_offset("z_offset");
+  std::vector<offset_values> plan;
+  for (const double dx : {-30.0, 0.0, 30.0})
+    for (const double dz : {-10.0, 5.0, 20.0})
+      for (const double dy : {-15.0, 0.0, 15.0}) {
+        offset_values d{};
+        d[x] = dx;
+        d[y] = dy;
+        d[z] = dz;
+        plan.push_back(d);
+      }
+  return plan;
 }
 
 // ---------------------------------------------------------------------------------------------

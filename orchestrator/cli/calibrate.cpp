@@ -26,8 +26,9 @@ CLI::App* add_calibrate_command(CLI::App& app, calibrate_arguments& a) {
       "Fit the gait's offsets (x/y/z/roll/pitch/yaw/hip_pitch_offset) to a static posture with "
       "Ceres and write the config.ini with the fitted values (docs/calibration.md)");
   c->add_option("--target", a.target,
-                "Target posture: joints mode a CSV (id + count|deg|rad), plant mode an INI "
-                "([Plant Target] pitch_deg, roll_deg, height_m, com_over_support)")
+                "Target posture: joints mode a CSV (id + count|deg|rad; delta_<offset> "
+                "columns for several postures), plant mode an INI ([Plant Target] pitch_deg, "
+                "roll_deg, height_m, com_over_support)")
       ->required()
       ->check(CLI::ExistingFile);
   c->add_option("--config", a.config, "Input config.ini ([Walking Config]): the start values")

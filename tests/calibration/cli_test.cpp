@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 using cosim::test::quoted;
 using cosim::test::run_command;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const fs::path k_data = STRIDE_TEST_DATA_DIR;
 const fs::path k_config =
@@ -103,6 +104,24 @@ TEST_F(calibration_cli, joint_mode_writes_the_config_and_the_report) {
   EXPECT_EQ(q.out, "");
   EXPECT_THAT(q.err, HasSubstr("stride: warning: x_offset, z_offset, pitch_offset, "
                                "hip_pitch_offset are not identifiable"));
+}
+
+TEST_F(calibration_cli, a_posture_plan_file_gives_back_all_seven_offsets) {
+  // data/posture_plan.csv: the recommended plan recorded with known offsets (its header)
+  const auto r = stride(args(k_data / "posture_plan.csv"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("27 postures"));
+  EXPECT_THAT(r.out, Not(HasSubstr("NOT IDENTIFIABLE")));
+  EXPECT_EQ(r.err, "");
+  const auto fitted = gait::read_walking_config(out(), {}, nullptr);
+  EXPECT_NEAR(fitted.x_offset, -7.3, 0.5);
+  EXPECT_NEAR(fitted.y_offset, 8.1, 0.5);
+  EXPECT_NEAR(fitted.z_offset, 25.4, 0.5);
+  EXPECT_NEAR(fitted.roll_offset, 1.7, 0.2);
+  EXPECT_NEAR(fitted.pitch_offset, 2.3, 0.2);
+  EXPECT_NEAR(fitted.yaw_offset, 3.1, 0.2);
+  EXPECT_NEAR(fitted.hip_pitch_offset, 10.6, 0.2);
+  EXPECT_EQ(fitted.period_time, 600.0);
 }
 
 TEST_F(calibration_cli, plant_mode_fits_the_torso_pitch) {

@@ -159,6 +159,90 @@ TEST_P(calibration_ik, an_outlier_servo_does_not_move_the_fit) {
   EXPECT_GT(std::abs(dragged.offsets[0].after - clean.offsets[0].after), 5.0);
 }
 
+// recommended_posture_plan() as a robot reports it: the 12 leg servos of every posture as whole
+// counts with -1/0/+1 count noise from the seed, `extra` added to (posture, ID)
+std::string noisy_posture_plan(const gait::walking_params& p, ik_mode mode, std::uint32_t seed,
+                               std::map<std::pair<int, int>, int> extra = {}) {
+  std::mt19937 rng(seed);
+  std::string csv;
+  for (const offset_info& o : offset_table()) csv += "delta_" + std::string(o.key) + ",";
+  csv += "id,count\n";
+  int posture = 0;
+  for (const offset_values& delta : recommended_posture_plan()) {
+    gait::walking_params q = p;
+    offset_values v = get_offsets(p);
+    std::string prefix;
+    for (std::size_t k = 0; k < offset_count; ++k) {
+      v[k] += delta[k];
+      prefix += std::to_string(delta[k]) + ",";
+    }
+    set_offsets(q, v);
+    const auto c = counts_of(q, mode);
+    for (int id = 7; id <= 18; ++id) {
+      const auto noise = static_cast<int>(rng() % 3) - 1;
+      const long value =
+          std::lround(c[static_cast<std::size_t>(id - 1)]) + noise + extra[{posture, id}];
+      csv += prefix + std::to_string(id) + "," + std::to_string(value) + "\n";
+    }
+    ++posture;
+  }
+  return csv;
+}
+
+// the truth with pitch_offset moved too: every one of the seven is off its default
+gait::walking_params truth_all_seven() {
+  gait::walking_params p = truth();
+  p.pitch_offset = 2.3;
+  return p;
+}
+
+TEST_P(calibration_ik, a_posture_plan_determines_all_seven_offsets_within_the_tolerance) {
+  const gait::walking_params p = truth_all_seven();
+  for (std::uint32_t seed = 1; seed <= 5; ++seed) {
+    const auto r =
+        fit_joint_posture(parse_joint_target(noisy_posture_plan(p, GetParam(), seed), "plan.csv"),
+                          gait::walking_params{}, options(GetParam(), "all"));
+    if (seed == 1) std::cout << format_report(r);
+    EXPECT_TRUE(r.converged) << r.termination;
+    EXPECT_EQ(r.postures.size(), 27u);
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    for (std::size_t i = 0; i < offset_count; ++i) {
+      const offset_result& o = r.offsets[i];
+      ASSERT_TRUE(o.fitted && o.identifiable) << offset_table()[i].key << ": " << o.note;
+      EXPECT_LE(std::abs(error(r, i, p)), tolerance(i))
+          << offset_table()[i].key << " seed " << seed << " sigma " << o.stddev;
+      // not luck: the tolerance is at least three reported sigmas
+      EXPECT_LE(3 * o.stddev, tolerance(i)) << offset_table()[i].key;
+    }
+  }
+}
+
+TEST_P(calibration_ik, an_outlier_servo_in_a_posture_plan_does_not_move_the_fit) {
+  const gait::walking_params p = truth_all_seven();
+  const auto clean =
+      fit_joint_posture(parse_joint_target(noisy_posture_plan(p, GetParam(), 7), "a.csv"),
+                        gait::walking_params{}, options(GetParam(), "all"));
+  const auto robust = fit_joint_posture(
+      parse_joint_target(noisy_posture_plan(p, GetParam(), 7, {{{4, 13}, 200}}), "b.csv"),
+      gait::walking_params{}, options(GetParam(), "all"));
+  for (std::size_t i = 0; i < offset_count; ++i) {
+    EXPECT_LE(std::abs(robust.offsets[i].after - clean.offsets[i].after), tolerance(i))
+        << offset_table()[i].key;
+    EXPECT_LE(std::abs(error(robust, i, p)), tolerance(i)) << offset_table()[i].key;
+  }
+  // posture 5 (index 4) is rows 50..61 of the file: servo 13 on line 2 + 4 * 12 + 6
+  std::size_t outliers = 0;
+  for (const joint_result& j : robust.joints) {
+    if (!j.outlier) continue;
+    ++outliers;
+    EXPECT_EQ(j.posture, 4);
+    EXPECT_EQ(j.id, 13);
+  }
+  EXPECT_EQ(outliers, 1u);
+  EXPECT_THAT(robust.warnings, Contains(HasSubstr("servo 13 (r_knee) (line 56)")));
+  EXPECT_THAT(format_report(robust), HasSubstr("P5   13 r_knee"));
+}
+
 TEST(calibration_joint_fit, walk_ready_pose_of_the_fact_sheet_is_the_framework_default_stance) {
   const joint_target target = read_joint_target(k_data / "walk_ready.csv");
   const gait::walking_params defaults;

@@ -88,6 +88,51 @@ TEST(calibration_joint_target, rejects_malformed_rows_and_headers) {
             "t.csv:2: value 5000 count of servo 7 is outside the servo range 0..4095 counts");
 }
 
+TEST(calibration_joint_target, delta_columns_group_rows_into_postures) {
+  const auto t = parse_joint_target(
+      "id,count,delta_z_offset,Delta_X_Offset\n"
+      "13,2600,0,0\n"
+      "13,2700,10,0\n"
+      "11,1600,10,0\n"
+      "11,1650,0,0\n"
+      "13,2750,10,-5.5\n",
+      "p.csv");
+  ASSERT_EQ(t.postures.size(), 3u);
+  EXPECT_EQ(t.postures[0].line, 2);
+  EXPECT_EQ(t.postures[1].line, 3);
+  EXPECT_EQ(t.postures[1].delta[*find_offset("z_offset")], 10.0);
+  EXPECT_EQ(t.postures[2].delta[*find_offset("x_offset")], -5.5);
+  EXPECT_EQ(t.postures[2].delta[*find_offset("y_offset")], 0.0);
+  // sorted by posture, then ID; the same servo may appear once in every posture
+  ASSERT_EQ(t.joints.size(), 5u);
+  const std::pair<int, int> order[] = {{0, 11}, {0, 13}, {1, 11}, {1, 13}, {2, 13}};
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_EQ(t.joints[i].posture, order[i].first) << i;
+    EXPECT_EQ(t.joints[i].id, order[i].second) << i;
+  }
+  EXPECT_EQ(t.joints[1].count, 2600.0);
+
+  // without delta columns: one posture, no delta
+  const auto plain = parse_joint_target("id,count\n13,2600\n", "c.csv");
+  ASSERT_EQ(plain.postures.size(), 1u);
+  EXPECT_EQ(plain.postures[0].delta, offset_values{});
+}
+
+TEST(calibration_joint_target, bad_posture_columns_name_file_and_line) {
+  EXPECT_EQ(joint_error("id,count,delta_z\n13,2600,0\n"),
+            "t.csv:1: unknown column 'delta_z' (known: delta_x_offset, delta_y_offset, "
+            "delta_z_offset, delta_roll_offset, delta_pitch_offset, delta_yaw_offset, "
+            "delta_hip_pitch_offset)");
+  EXPECT_EQ(joint_error("id,count,delta_z_offset,DELTA_Z_OFFSET\n"),
+            "t.csv:1: the header has column 'delta_z_offset' twice");
+  EXPECT_EQ(joint_error("id,count,delta_z_offset\n13,2600,0\n13,2601,5\n13,2602,0\n"),
+            "t.csv:4: duplicate servo ID 13 in one posture (same deltas) (first on line 2)");
+  EXPECT_EQ(joint_error("id,count,delta_z_offset\n13,2600,deep\n"),
+            "t.csv:2: delta_z_offset 'deep' is not a finite number");
+  EXPECT_EQ(joint_error("id,count,delta_z_offset\n13,2600,inf\n"),
+            "t.csv:2: delta_z_offset 'inf' is not a finite number");
+}
+
 TEST(calibration_plant_target, reads_targets_scales_and_settle_settings) {
   const auto t = parse_plant_target(
       "; comment\n[Plant Target]\npitch_deg = 1.5 ; lean\nroll_deg=0\nheight_m = 0.3\n"

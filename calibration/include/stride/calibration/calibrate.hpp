@@ -53,6 +53,7 @@ struct offset_result {
 /// One joint in a joint-mode report (counts).
 struct joint_result {
   int id = 0;
+  int posture = 0;  ///< index into joint_target::postures
   double target = 0;
   double model_before = 0, model_after = 0;  ///< untruncated gait output
   bool fitted = true;    ///< false: no offset changes this servo (arms, head); not in the cost
@@ -74,7 +75,8 @@ struct calibration_report {
   std::string target_source;
   gait::ik_mode ik = gait::ik_mode::darwin;
   std::vector<offset_result> offsets;       ///< all seven, table order
-  std::vector<joint_result> joints;         ///< joint mode
+  std::vector<joint_result> joints;         ///< joint mode, by posture then ID
+  std::vector<posture> postures;            ///< joint mode: the target's postures
   std::vector<plant_result> plant;          ///< plant mode
   double initial_cost = 0, final_cost = 0;  ///< Ceres cost (1/2 sum of robust squared residuals)
   int iterations = 0;
