@@ -9,7 +9,7 @@ packages=(
   libtinyxml2-dev libzip-dev zipcmp zipmerge ziptool zip unzip
   libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox
+  valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3
 )
 
 missing=()

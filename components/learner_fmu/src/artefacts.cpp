@@ -93,10 +93,14 @@ std::string csv_header(const state_grid& grid, const std::string& prefix) {
   return h;
 }
 
-std::string csv_values(const state_grid& grid, std::size_t s) {
+std::string csv_values(const std::vector<double>& values) {
   std::string row;
-  for (double v : grid.values(s)) row += (row.empty() ? "" : ",") + format_number(v);
+  for (double v : values) row += (row.empty() ? "" : ",") + format_number(v);
   return row;
+}
+
+std::string csv_values(const state_grid& grid, std::size_t s) {
+  return csv_values(grid.values(s));
 }
 
 }  // namespace
@@ -279,7 +283,7 @@ void artefact_writer::write(std::FILE* f, const std::string& line) {
 void artefact_writer::step(const step_record& s) {
   if (steps_ == nullptr) return;
   std::string line = std::to_string(s.rl_step) + "," + std::to_string(s.episode) + "," +
-                     std::to_string(s.step_in_episode) + "," + csv_values(*grid_, s.state) + "," +
+                     std::to_string(s.step_in_episode) + "," + csv_values(s.values) + "," +
                      std::to_string(s.action) + "," + (s.fell ? "1" : "0") + "," +
                      format_number(s.distance) + "," + format_number(s.duration) + "," +
                      format_number(s.speed) + "," + format_number(s.reward) + "," +

@@ -185,6 +185,7 @@ void session::finish_step(advance_report& r, const plant_inputs& in, bool fell, 
   rec.episode = st_.episode;
   rec.step_in_episode = st_.step_in_episode;
   rec.state = static_cast<std::size_t>(st_.state);
+  rec.values = current_values();
   rec.fell = fell;
   rec.distance = distance;
   rec.duration = duration;

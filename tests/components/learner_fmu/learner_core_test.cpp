@@ -333,6 +333,8 @@ TEST(learner_session, an_episode_ends_after_10_falls) {
   ASSERT_FALSE(r.episodes.empty());
   int falls = 0;
   for (const auto& s : r.steps) {
+    EXPECT_EQ(s.values, c.grid.values(s.state));
+    EXPECT_EQ(s.fell, s.values[1] >= 25);
     if (s.fell) {
       ++falls;
       EXPECT_EQ(s.reward, -400.0);
@@ -383,7 +385,11 @@ TEST(learner_session, evaluation_mode_measures_without_learning) {
   p.seen_restarts = st.restarts - 1;
   int steps = 0;
   for (int i = 0; i < 1000 && s.phase() != walk_phase::finished; ++i) {
-    if (s.advance(p.step(s, st), 300'000'000).step) ++steps;
+    const advance_report r = s.advance(p.step(s, st), 300'000'000);
+    if (!r.step) continue;
+    ++steps;
+    // the log names the point walked, not a grid state
+    EXPECT_EQ(r.step->values, (std::vector<double>{600, 20}));
   }
   EXPECT_EQ(steps, 10);
   EXPECT_NEAR(st.eval_distance, 10 * 0.1, 1e-12);

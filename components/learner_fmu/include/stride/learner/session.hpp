@@ -101,8 +101,9 @@ struct plant_inputs {
 struct step_record {
   std::int64_t rl_step = 0;  ///< 1-based number of this step
   std::int64_t episode = 0;
-  int step_in_episode = 0;  ///< 1-based
-  std::size_t state = 0;
+  int step_in_episode = 0;     ///< 1-based
+  std::size_t state = 0;       ///< grid state (learning mode)
+  std::vector<double> values;  ///< the parameter values walked: the state's, or eval_point
   std::size_t action = 0;
   std::size_t next_state = 0;
   bool fell = false;
