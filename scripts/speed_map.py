@@ -3,6 +3,7 @@
 
 usage: scripts/speed_map.py --output DIR [--grid GRID] [--stop-time 60] [--jobs N]
                             [--set comp.var=value ...] [--system FILE] [--stride PATH]
+                            [--compare V_TABLE.csv ...]
 
 For each state of GRID (`name:min:max:step,...`, default the 455 states of Experiment 1) it runs
 `stride run SYSTEM` (default models/experiments/evaluate-point.xml: gait + robot + learner in
@@ -10,7 +11,10 @@ evaluation mode) with `eval.eval_point` set to the state, into DIR/points/<value
 Points already evaluated are kept, so an interrupted map continues where it stopped. Then it
 writes DIR/speed_map.csv (grid values, W-footstep windows walked without a fall, falls, mean
 speed over those windows in cm/s, mean reward per RL step as the learner sees it, falls included) and, for a 2-D grid, DIR/speed_map.png (gnuplot), and
-prints the best states. This is the ground truth the learner's V(s) should rank alike.
+prints the best states. This is the ground truth the learner's V(s) should rank alike: with
+--compare, for each learner V table (v_table.csv or a snapshot, same grid) it prints the Spearman
+rank correlation of V with the mean reward and how many of the 10 largest V are among the 10
+fastest states without a fall.
 Python 3 standard library and gnuplot only.
 """
 import argparse
@@ -127,6 +131,49 @@ def plot(out_dir, names, rows):
         sys.exit(f"gnuplot failed on {script}: {done.stderr.strip()}")
 
 
+def ranks(values):
+    """Ranks 0..n-1, ties sharing their mean rank."""
+    order = sorted(range(len(values)), key=lambda i: values[i])
+    out = [0.0] * len(values)
+    i = 0
+    while i < len(order):
+        j = i
+        while j + 1 < len(order) and values[order[j + 1]] == values[order[i]]:
+            j += 1
+        for k in range(i, j + 1):
+            out[order[k]] = (i + j) / 2
+        i = j + 1
+    return out
+
+
+def spearman(a, b):
+    ra, rb = ranks(a), ranks(b)
+    ma, mb = sum(ra) / len(ra), sum(rb) / len(rb)
+    cov = sum((x - ma) * (y - mb) for x, y in zip(ra, rb))
+    var = (sum((x - ma) ** 2 for x in ra) * sum((y - mb) ** 2 for y in rb)) ** 0.5
+    return cov / var if var > 0 else float("nan")
+
+
+def compare(path, names, rows):
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        if reader.fieldnames != names + ["V"]:
+            sys.exit(f"{path}: expected the columns {','.join(names + ['V'])}")
+        values = {tuple(float(r[n]) for n in names): float(r["V"]) for r in reader}
+    by_state = {tuple(r["values"]): r for r in rows}
+    if values.keys() != by_state.keys():
+        sys.exit(f"{path}: another grid than the speed map")
+    states = sorted(by_state)
+    rho = spearman([values[s] for s in states], [by_state[s]["mean_reward"] for s in states])
+    top_v = set(sorted(states, key=lambda s: -values[s])[:10])
+    fastest = set(sorted((s for s in states if by_state[s]["falls"] == 0
+                          and by_state[s]["windows"] > 0),
+                         key=lambda s: -by_state[s]["mean_speed"])[:10])
+    print(f"{path}: Spearman rho(V, mean reward) = {rho:.3f}; "
+          f"{len(top_v & fastest)} of its 10 largest V are among the 10 fastest states "
+          "without a fall")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--output", required=True, help="folder for the points and the map")
@@ -137,6 +184,8 @@ def main():
     parser.add_argument("--system", default=os.path.join(ROOT, "models/experiments/"
                                                          "evaluate-point.xml"))
     parser.add_argument("--stride", default=os.path.join(ROOT, "build/bin/stride"))
+    parser.add_argument("--compare", action="append", default=[], metavar="V_TABLE",
+                        help="a learner V table of the same grid to rank against the map")
     args = parser.parse_args()
     if not os.access(args.stride, os.X_OK):
         sys.exit(f"{args.stride}: not found; build first (scripts/build.sh) or give --stride")
@@ -179,6 +228,8 @@ def main():
         print(f"{title}: " + "; ".join(
             "/".join(fmt(v) for v in r["values"]) + f" {r['mean_speed']:.2f} cm/s "
             f"({r['falls']} falls, reward {r['mean_reward']:.1f})" for r in top))
+    for path in args.compare:
+        compare(path, names, rows)
 
 
 if __name__ == "__main__":

@@ -52,6 +52,20 @@ class speed_map(unittest.TestCase):
             self.assertEqual(os.stat(result).st_mtime_ns, stamp)
             self.assertEqual(read_rows(os.path.join(out, "speed_map.csv")), rows)
 
+            # a learner table that ranks the two states as the map does, and one of another grid
+            table = os.path.join(out, "v_table.csv")
+            with open(table, "w") as f:
+                f.write("period_time,swing_right_left,V\n450,15,10\n960,15,-5\n")
+            ranked = run(*args, "--compare", table)
+            self.assertEqual(ranked.returncode, 0, ranked.stderr)
+            self.assertIn("Spearman rho(V, mean reward) = 1.000; 1 of its 10 largest V are among "
+                          "the 10 fastest states without a fall", ranked.stdout)
+            with open(table, "w") as f:
+                f.write("period_time,swing_right_left,V\n450,15,10\n")
+            other = run(*args, "--compare", table)
+            self.assertNotEqual(other.returncode, 0)
+            self.assertIn("another grid than the speed map", other.stderr)
+
     def test_bad_arguments_are_errors_naming_the_culprit(self):
         with tempfile.TemporaryDirectory() as out:
             bad = run(SPEED_MAP, "--stride", CLI, "--output", out, "--grid", "period_time:450:960")
