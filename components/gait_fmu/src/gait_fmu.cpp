@@ -144,6 +144,9 @@ class gait_model : public sdk::model_base<gait_data> {
   }
 
   void on_set(const sdk::variable& v) override {
+    // only the [Walking Config] parameters are remembered (explicit sets win over config_file);
+    // inputs such as the gyro are set every step and skip the name search
+    if (v.causality_kind != sdk::causality::parameter) return;
     const auto table = walking_param_table();
     for (int i = 0; i < param_count; ++i) {
       if (v.name == table[static_cast<std::size_t>(i)].key) data_.params_set_explicitly |= 1u << i;
