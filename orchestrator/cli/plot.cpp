@@ -310,17 +310,29 @@ std::vector<evaluation_row> read_evaluations(const fs::path& dir) {
     std::string cell;
     while (std::getline(a, cell, ',')) hs.push_back(cell);
     while (std::getline(b, cell, ',')) vs.push_back(cell);
-    if (hs.size() != vs.size() || hs.size() < 6) continue;
+    if (hs.size() != vs.size()) continue;
+    const auto column = [&hs](const char* name) {
+      return static_cast<std::size_t>(std::find(hs.begin(), hs.end(), name) - hs.begin());
+    };
+    const std::size_t n = column("windows");
+    const std::size_t cols[] = {n,
+                                column("falls"),
+                                column("distance"),
+                                column("measured_time"),
+                                column("mean_speed"),
+                                column("sim_time")};
+    if (std::any_of(std::begin(cols), std::end(cols),
+                    [&](std::size_t c) { return c >= hs.size(); }))
+      continue;
     evaluation_row r;
     r.name = d == dir ? dir.filename().string() : d.filename().string();
-    const std::size_t n = hs.size() - 6;
     for (std::size_t i = 0; i < n; ++i) r.point.emplace_back(hs[i], vs[i]);
-    r.windows = to_number(vs[n]);
-    r.falls = to_number(vs[n + 1]);
-    r.distance = to_number(vs[n + 2]);
-    r.measured = to_number(vs[n + 3]);
-    r.speed = to_number(vs[n + 4]);
-    r.sim = to_number(vs[n + 5]);
+    r.windows = to_number(vs[cols[0]]);
+    r.falls = to_number(vs[cols[1]]);
+    r.distance = to_number(vs[cols[2]]);
+    r.measured = to_number(vs[cols[3]]);
+    r.speed = to_number(vs[cols[4]]);
+    r.sim = to_number(vs[cols[5]]);
     rows.push_back(r);
   }
   return rows;

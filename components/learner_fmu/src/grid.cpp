@@ -169,6 +169,13 @@ state_grid state_grid::parse(std::string_view text, std::string_view what) {
   return g;
 }
 
+std::optional<std::size_t> state_grid::dimension(std::string_view name) const {
+  for (std::size_t d = 0; d < dims_.size(); ++d) {
+    if (dims_[d].name == name) return d;
+  }
+  return std::nullopt;
+}
+
 std::size_t state_grid::index(const std::vector<int>& coords) const {
   if (coords.size() != dims_.size())
     throw learner_error("state_grid::index: wrong dimension count");

@@ -50,6 +50,7 @@ struct learner_data {
   // parameters
   sdk::text grid{"period_time:450:960:15,swing_right_left:15:39:2"};
   int mode = 0;
+  sdk::text protocol{"paper"};
   sdk::text eval_point{};
   double alpha = 0.10;
   double gamma = 0.90;
@@ -62,6 +63,8 @@ struct learner_data {
   double k1 = 0.33;
   double k2 = 10.0;
   double negative_reward = -400.0;
+  double speed_cap = 0.0;
+  double capped_reward = 0.0;
   double initial_value = 0.0;
   int seed = 1;
   int total_steps = 300000;
@@ -97,7 +100,47 @@ struct learner_data {
   session_state session{};
   bool started = false;
   bool finalized = false;
+  std::uint32_t set_explicitly = 0;  // bit i: k_protocol_settings[i] came from fmi2Set
 };
+
+// The settings whose defaults the protocol chooses: explicit sets win over the protocol.
+struct protocol_setting {
+  const char* name;
+  void (*take_default)(learner_data&, const learner_config&);
+};
+// clang-format off
+constexpr protocol_setting k_protocol_settings[] = {
+    {"alpha", [](learner_data& d, const learner_config& c) { d.alpha = c.td.alpha; }},
+    {"gamma", [](learner_data& d, const learner_config& c) { d.gamma = c.td.gamma; }},
+    {"lambda", [](learner_data& d, const learner_config& c) { d.lambda = c.td.lambda; }},
+    {"epsilon", [](learner_data& d, const learner_config& c) { d.epsilon = c.epsilon; }},
+    {"steps_per_episode",
+     [](learner_data& d, const learner_config& c) { d.steps_per_episode = c.steps_per_episode; }},
+    {"max_falls", [](learner_data& d, const learner_config& c) { d.max_falls = c.max_falls; }},
+    {"footsteps_per_step",
+     [](learner_data& d, const learner_config& c) { d.footsteps_per_step = c.footsteps_per_step; }},
+    {"settle_footsteps",
+     [](learner_data& d, const learner_config& c) { d.settle_footsteps = c.settle_footsteps; }},
+    {"k1", [](learner_data& d, const learner_config& c) { d.k1 = c.reward.k1; }},
+    {"k2", [](learner_data& d, const learner_config& c) { d.k2 = c.reward.k2; }},
+    {"negative_reward",
+     [](learner_data& d, const learner_config& c) { d.negative_reward = c.reward.negative_reward; }},
+    {"speed_cap", [](learner_data& d, const learner_config& c) { d.speed_cap = c.reward.speed_cap; }},
+    {"capped_reward",
+     [](learner_data& d, const learner_config& c) { d.capped_reward = c.reward.capped_reward; }},
+    {"balance", [](learner_data& d, const learner_config& c) { d.balance = c.balance; }},
+};
+// clang-format on
+static_assert(std::size(k_protocol_settings) <= 32);
+
+protocol parse_protocol_parameter(std::string_view name) {
+  const auto p = parse_protocol(name);
+  if (!p) {
+    throw sdk::model_error("protocol '" + std::string(name) +
+                           "' is not a learner protocol (paper, authors-code)");
+  }
+  return *p;
+}
 
 std::string format_duration(double seconds) {
   if (!(seconds >= 0) || seconds > 1e8) return "?";
@@ -151,6 +194,12 @@ class learner_model : public sdk::model_base<learner_data> {
     t.add("eval_point", &d::eval_point)
         .parameter()
         .describe("Evaluation mode: one value per grid dimension, ',' between");
+    t.add("protocol", &d::protocol)
+        .parameter()
+        .describe(
+            "paper (Table 2 as printed) or authors-code (the authors' Webots controller): how a "
+            "step is measured, when an episode ends, and the defaults of the settings below; "
+            "parameters set explicitly win");
     t.add("alpha", &d::alpha).parameter().range(0, 1).describe("Learning rate");
     t.add("gamma", &d::gamma).parameter().range(0, 1).describe("Discount factor");
     t.add("lambda", &d::lambda).parameter().range(0, 1).describe("Eligibility trace decay");
@@ -175,6 +224,14 @@ class learner_model : public sdk::model_base<learner_data> {
     t.add("negative_reward", &d::negative_reward)
         .parameter()
         .describe("Reward of an RL step in which the robot fell");
+    t.add("speed_cap", &d::speed_cap)
+        .parameter()
+        .unit("cm/s")
+        .min(0)
+        .describe("From this speed on the reward is capped_reward (0: no cap)");
+    t.add("capped_reward", &d::capped_reward)
+        .parameter()
+        .describe("Reward of a step at or above speed_cap");
     t.add("initial_value", &d::initial_value).parameter().describe("Initial V of every state");
     t.add("seed", &d::seed).parameter().describe("Random seed (start states, exploration, ties)");
     t.add("total_steps", &d::total_steps)
@@ -252,6 +309,22 @@ class learner_model : public sdk::model_base<learner_data> {
         .describe("Sum of |V change| over the states in the last completed episode");
     t.add("progress", &d::progress).output().describe("Fraction of total_steps done (0..1)");
     return t.finish();
+  }
+
+  void on_set(const sdk::variable& v) override {
+    if (v.causality_kind != sdk::causality::parameter) return;
+    if (v.name == "protocol") {
+      const learner_config defaults =
+          protocol_defaults(parse_protocol_parameter(data_.protocol.view()));
+      for (std::size_t i = 0; i < std::size(k_protocol_settings); ++i) {
+        if ((data_.set_explicitly & (1u << i)) == 0)
+          k_protocol_settings[i].take_default(data_, defaults);
+      }
+      return;
+    }
+    for (std::size_t i = 0; i < std::size(k_protocol_settings); ++i) {
+      if (v.name == k_protocol_settings[i].name) data_.set_explicitly |= 1u << i;
+    }
   }
 
   void enter_initialization() override {
@@ -410,6 +483,7 @@ class learner_model : public sdk::model_base<learner_data> {
       c.grid = state_grid::parse(data_.grid.view(), "grid");
       check_grid_against_gait(c.grid, "grid");
       c.mode = static_cast<learner_mode>(data_.mode);
+      c.rules = parse_protocol_parameter(data_.protocol.view());
       c.eval_point = parse_number_list(data_.eval_point.view(), "eval_point");
       if (c.mode == learner_mode::evaluate) {
         // an evaluation point need not lie on the grid, but within the gait's ranges
@@ -427,11 +501,12 @@ class learner_model : public sdk::model_base<learner_data> {
       c.max_falls = data_.max_falls;
       c.footsteps_per_step = data_.footsteps_per_step;
       c.settle_footsteps = data_.settle_footsteps;
-      c.reward = {data_.k1, data_.k2, data_.negative_reward};
+      c.reward = {data_.k1, data_.k2, data_.negative_reward, data_.speed_cap, data_.capped_reward};
       c.initial_value = data_.initial_value;
       c.seed = static_cast<std::uint64_t>(static_cast<std::int64_t>(data_.seed));
       c.total_steps = data_.total_steps;
       c.step_timeout = data_.step_timeout;
+      c.balance = data_.balance;
       c.validate();
       return c;
     } catch (const learner_error& e) {
@@ -519,7 +594,8 @@ class learner_model : public sdk::model_base<learner_data> {
         write_best_config(writer_.dir() / "config.ini", fs::path(data_.base_config.c_str()),
                           overrides_, config_.grid, b.best_values);
         write_text(writer_.dir() / "best.txt",
-                   b.text + "RL steps: " + std::to_string(data_.session.rl_step) +
+                   b.text + "protocol: " + std::string(to_string(config_.rules)) +
+                       "\nRL steps: " + std::to_string(data_.session.rl_step) +
                        ", episodes: " + std::to_string(data_.session.episode) +
                        ", falls: " + std::to_string(data_.session.total_falls) + "\n");
       }
@@ -530,28 +606,33 @@ class learner_model : public sdk::model_base<learner_data> {
       }
     } else {
       const session_state& st = data_.session;
-      const double speed = st.eval_time > 0 ? 100.0 * st.eval_distance / st.eval_time : 0.0;
+      const double speed = session_->mean_speed();
+      const double physical = st.eval_time > 0 ? 100.0 * st.eval_distance / st.eval_time : 0.0;
       if (writer_.active()) {
         std::string header, row;
         for (std::size_t d = 0; d < config_.grid.dimension_count(); ++d) {
           header += config_.grid.dimensions()[d].name + ",";
           row += format_number(config_.eval_point[d]) + ",";
         }
-        write_text(writer_.dir() / "evaluation.csv",
-                   header + "windows,falls,distance,measured_time,mean_speed,sim_time\n" + row +
-                       std::to_string(st.rl_step) + "," + std::to_string(st.total_falls) + "," +
-                       format_number(st.eval_distance) + "," + format_number(st.eval_time) + "," +
-                       format_number(speed) + "," +
-                       format_number(static_cast<double>(st.clock_ns) / 1e9) + "\n");
+        write_text(
+            writer_.dir() / "evaluation.csv",
+            header +
+                "windows,falls,distance,measured_time,mean_speed,sim_time,physical_speed,"
+                "protocol\n" +
+                row + std::to_string(st.rl_step) + "," + std::to_string(st.total_falls) + "," +
+                format_number(st.eval_distance) + "," + format_number(st.eval_time) + "," +
+                format_number(speed) + "," + format_number(static_cast<double>(st.clock_ns) / 1e9) +
+                "," + format_number(physical) + "," + std::string(to_string(config_.rules)) + "\n");
       }
       if (data_.log_progress) {
-        char buf[200];
+        char buf[240];
         std::snprintf(buf, sizeof buf,
                       "evaluated %s: %lld windows, %lld falls, %.3f m in %.1f s measured, mean "
-                      "speed %.2f cm/s",
+                      "speed %.2f cm/s (%s protocol; physical %.2f cm/s)",
                       describe_point(config_.grid, config_.eval_point).c_str(),
                       static_cast<long long>(st.rl_step), static_cast<long long>(st.total_falls),
-                      st.eval_distance, st.eval_time, speed);
+                      st.eval_distance, st.eval_time, speed,
+                      std::string(to_string(config_.rules)).c_str(), physical);
         context_.log->log(sdk::log_level::info, "logProgress", buf);
       }
     }
@@ -571,7 +652,7 @@ class learner_model : public sdk::model_base<learner_data> {
     const std::vector<double> v = session_->current_values();
     for (std::size_t i = 0; i < k_outputs; ++i) data_.value[i] = i < v.size() ? v[i] : 0.0;
     data_.reset_robot = st.restarts;
-    data_.balance_on = data_.balance && st.balance_gate;
+    data_.balance_on = config_.balance && st.balance_gate;
     data_.episode = static_cast<int>(st.episode);
     data_.rl_step = static_cast<int>(st.rl_step);
     data_.step_in_episode = st.step_in_episode;

@@ -13,7 +13,39 @@ bool finite(double v) {
   return std::isfinite(v);
 }
 
+// the authors' controller counts its window in 16 ms control iterations (Webots basicTimeStep)
+constexpr std::int64_t k_control_iteration_ns = 16'000'000;
+
 }  // namespace
+
+std::optional<protocol> parse_protocol(std::string_view name) {
+  if (name == "paper") return protocol::paper;
+  if (name == "authors-code") return protocol::authors_code;
+  return std::nullopt;
+}
+
+std::string_view to_string(protocol p) {
+  return p == protocol::authors_code ? "authors-code" : "paper";
+}
+
+learner_config protocol_defaults(protocol p) {
+  learner_config c;
+  c.rules = p;
+  if (p == protocol::authors_code) {
+    c.td.lambda = 0.3;
+    c.steps_per_episode = 30;
+    c.max_falls = 10;
+    c.settle_footsteps = 0;
+    // 10^((v + 1e-5)/10)/3 = K1·10^(v/10) with K1 = 10^(1e-6)/3
+    c.reward.k1 = std::pow(10.0, 1e-6) / 3.0;
+    c.reward.k2 = 10.0;
+    c.reward.negative_reward = -200;
+    c.reward.speed_cap = 30;
+    c.reward.capped_reward = 50;
+    c.balance = false;
+  }
+  return c;
+}
 
 void learner_config::validate() const {
   require(grid.size() > 0, "grid", "no states");
@@ -31,6 +63,14 @@ void learner_config::validate() const {
   require(finite(initial_value), "initial_value", "must be finite");
   require(total_steps >= 0, "total_steps", "must be >= 0");
   require(finite(step_timeout) && step_timeout > 0, "step_timeout", "must be > 0");
+  require(finite(reward.speed_cap) && reward.speed_cap >= 0, "speed_cap", "must be >= 0");
+  require(finite(reward.capped_reward), "capped_reward", "must be finite");
+  if (rules == protocol::authors_code) {
+    require(grid.dimension("period_time").has_value(), "grid",
+            "the authors-code protocol times its window in periods: the grid needs a "
+            "period_time dimension, got " +
+                grid.str());
+  }
   if (mode == learner_mode::evaluate) {
     require(eval_point.size() == grid.dimension_count(), "eval_point",
             "needs one value per grid dimension (" + std::to_string(grid.dimension_count()) + ": " +
@@ -48,6 +88,7 @@ std::string learner_config::canonical() const {
   };
   add("grid", grid.str());
   add("mode", std::to_string(static_cast<int>(mode)));
+  add("protocol", std::string(to_string(rules)));
   std::string point;
   for (double v : eval_point) point += (point.empty() ? "" : ",") + format_number(v);
   add("eval_point", point);
@@ -62,6 +103,8 @@ std::string learner_config::canonical() const {
   add("k1", format_number(reward.k1));
   add("k2", format_number(reward.k2));
   add("negative_reward", format_number(reward.negative_reward));
+  add("speed_cap", format_number(reward.speed_cap));
+  add("capped_reward", format_number(reward.capped_reward));
   add("initial_value", format_number(initial_value));
   add("seed", std::to_string(seed));
   // total_steps is left out on purpose: a resumed run may be given more steps
@@ -88,6 +131,7 @@ void session::begin_episode() {
   st_.episode += 1;
   st_.step_in_episode = 0;
   st_.falls_in_episode = 0;
+  st_.steps_without_fall = 0;
   st_.episode_reward = 0;
   z_.clear();
   st_.state = static_cast<std::int64_t>(uniform_below(st_.rng, cfg_.grid.size()));
@@ -113,6 +157,39 @@ void session::start_measuring(const plant_inputs& in) {
   st_.t0_ns = st_.clock_ns;
   st_.phase_start_ns = st_.clock_ns;
   st_.target_footsteps = st_.footsteps_seen + cfg_.footsteps_per_step;
+  if (cfg_.rules == protocol::authors_code) {
+    // the controller's test cont >= (period_time/8)·W, with cont counting 16 ms iterations
+    const auto iterations = static_cast<std::int64_t>(
+        std::ceil(period_time_ms() / 8.0 * static_cast<double>(cfg_.footsteps_per_step)));
+    st_.window_end_ns = st_.clock_ns + iterations * k_control_iteration_ns;
+  }
+}
+
+double session::period_time_ms() const {
+  return current_values()[*cfg_.grid.dimension("period_time")];
+}
+
+double session::window_speed(double distance, double duration) const {
+  if (cfg_.rules == protocol::paper) return duration > 0 ? 100.0 * distance / duration : 0.0;
+  // the controller divides by W periods although its window lasts 2·W, and reads less than
+  // 1 cm as standing still
+  if (distance <= 0.01) return 0.0;
+  return 100.0 * distance /
+         (static_cast<double>(cfg_.footsteps_per_step) * period_time_ms() / 1000.0);
+}
+
+bool session::episode_over() const {
+  if (cfg_.rules == protocol::authors_code) {
+    return st_.steps_without_fall > cfg_.steps_per_episode || st_.falls_in_episode > cfg_.max_falls;
+  }
+  return st_.step_in_episode >= cfg_.steps_per_episode || st_.falls_in_episode >= cfg_.max_falls;
+}
+
+double session::mean_speed() const {
+  if (cfg_.rules == protocol::authors_code) {
+    return st_.eval_windows > 0 ? st_.eval_speed_sum / static_cast<double>(st_.eval_windows) : 0.0;
+  }
+  return st_.eval_time > 0 ? 100.0 * st_.eval_distance / st_.eval_time : 0.0;
 }
 
 std::vector<double> session::current_values() const {
@@ -151,13 +228,17 @@ advance_report session::advance(const plant_inputs& in, std::int64_t h_ns) {
   }
   if (ph == walk_phase::settling && st_.footsteps_seen >= st_.target_footsteps) {
     start_measuring(in);
-  } else if (ph == walk_phase::measuring && st_.footsteps_seen >= st_.target_footsteps) {
+  } else if (ph == walk_phase::measuring &&
+             (cfg_.rules == protocol::authors_code ? st_.clock_ns >= st_.window_end_ns
+                                                   : st_.footsteps_seen >= st_.target_footsteps)) {
     const double distance = std::hypot(in.base_x - st_.x0, in.base_y - st_.y0);
     const double duration = static_cast<double>(st_.clock_ns - st_.t0_ns) / 1e9;
     finish_step(r, in, false, distance, duration);
     return r;
   }
-  if (static_cast<double>(st_.clock_ns - st_.phase_start_ns) / 1e9 > cfg_.step_timeout) {
+  const bool waits_for_footsteps = ph == walk_phase::settling || cfg_.rules == protocol::paper;
+  if (waits_for_footsteps &&
+      static_cast<double>(st_.clock_ns - st_.phase_start_ns) / 1e9 > cfg_.step_timeout) {
     throw learner_error("no progress: " + std::to_string(st_.footsteps_seen) + " of " +
                         std::to_string(st_.target_footsteps) + " footsteps after " +
                         format_number(cfg_.step_timeout) +
@@ -169,7 +250,7 @@ advance_report session::advance(const plant_inputs& in, std::int64_t h_ns) {
 
 void session::finish_step(advance_report& r, const plant_inputs& in, bool fell, double distance,
                           double duration) {
-  const double speed = (fell || duration <= 0) ? 0.0 : 100.0 * distance / duration;
+  const double speed = fell ? 0.0 : window_speed(distance, duration);
   const double reward = step_reward(speed, fell, cfg_.reward);
   st_.rl_step += 1;
   st_.step_in_episode += 1;
@@ -179,7 +260,9 @@ void session::finish_step(advance_report& r, const plant_inputs& in, bool fell, 
   if (fell) {
     st_.falls_in_episode += 1;
     st_.total_falls += 1;
+    st_.steps_without_fall = 0;
   }
+  st_.steps_without_fall += 1;  // the controller counts the falling step as the first
   step_record rec;
   rec.rl_step = st_.rl_step;
   rec.episode = st_.episode;
@@ -197,6 +280,8 @@ void session::finish_step(advance_report& r, const plant_inputs& in, bool fell, 
     if (!fell) {
       st_.eval_distance += distance;
       st_.eval_time += duration;
+      st_.eval_speed_sum += speed;
+      st_.eval_windows += 1;
     }
     rec.next_state = rec.state;
     r.step = rec;
@@ -218,8 +303,7 @@ void session::finish_step(advance_report& r, const plant_inputs& in, bool fell, 
     r.step = rec;
     st_.state = static_cast<std::int64_t>(s_next);
 
-    const bool episode_done =
-        st_.step_in_episode >= cfg_.steps_per_episode || st_.falls_in_episode >= cfg_.max_falls;
+    const bool episode_done = episode_over();
     if (episode_done || finished) {
       episode_record e;
       e.episode = st_.episode;

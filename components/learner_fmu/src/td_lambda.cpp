@@ -60,6 +60,7 @@ std::size_t choose_epsilon_greedy(const value_table& v, const state_grid& g, std
 
 double step_reward(double speed_cm_per_s, bool fell, const reward_params& p) {
   if (fell) return p.negative_reward;
+  if (p.speed_cap > 0 && speed_cm_per_s >= p.speed_cap) return p.capped_reward;
   return p.k1 * std::pow(10.0, speed_cm_per_s / p.k2);
 }
 

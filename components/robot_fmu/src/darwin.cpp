@@ -21,20 +21,32 @@ std::array<double, k_servo_count> walk_ready_pose() {
   return q;
 }
 
-robot_config default_config(const std::string& urdf_path) {
+std::optional<plant_profile> parse_plant_profile(std::string_view name) {
+  if (name == "stiff") return plant_profile::stiff;
+  if (name == "webots") return plant_profile::webots;
+  return std::nullopt;
+}
+
+std::string_view to_string(plant_profile profile) {
+  return profile == plant_profile::webots ? "webots" : "stiff";
+}
+
+robot_config default_config(const std::string& urdf_path, plant_profile profile) {
   robot_config c;
   c.urdf_path = urdf_path;
   const auto pose = walk_ready_pose();
   c.initial_pose.assign(pose.begin(), pose.end());
-  // servo response: Webots' rigid velocity servo, but P = 18 1/s without the 55 rad/s² ramp; with
-  // Webots' P = 10 and ramp the joints lag the gait by 0.1 s and strides shrink to 63 %; the
-  // choice is measured in models/darwin-op/README.md (servo stiffness)
-  c.servo.p_gain = k_servo_p_gain;
-  c.servo.max_acceleration = 0.0;
+  // servo response: robot_config's defaults are Webots' servo (P = 10 with a 55 rad/s² ramp);
+  // the stiff profile follows the gait more closely (P = 18, no ramp), measured in
+  // models/darwin-op/README.md (servo stiffness)
+  if (profile == plant_profile::stiff) {
+    c.servo.p_gain = 18.0;
+    c.servo.max_acceleration = 0.0;
+  }
   // arms (3..6) and head (19, 20) hold constant targets while walking: welding them halves the
   // cost of a physics step
   c.rigid_servos = {3, 4, 5, 6, 19, 20};
-  // Webots' basicTimeStep for the DARwIn-OP worlds the paper used: the gait ticks twice per
+  // Webots' basicTimeStep for the DARwIn-OP worlds the study used: the gait ticks twice per
   // physics step and the plant sees the second target, as in Webots (models/darwin-op/README.md)
   c.physics_step = k_physics_step;
   c.imu_link = "imu_link";

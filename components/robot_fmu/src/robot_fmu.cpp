@@ -2,7 +2,8 @@
 //
 // Inputs   joint_target[1..20] (rad, by servo ID), reset (a change re-stands the robot at the
 //          origin), push_x, push_y (N, on the torso)
-// Params   urdf, physics and contact settings, servo model, fall thresholds (all fixed)
+// Params   profile (stiff | webots), urdf, physics and contact settings, servo model, fall
+//          thresholds (all fixed)
 // Outputs  joint_angle[1..20], gyro_fb, gyro_rl (board counts − 512, for gait.fmu), gyro[1..3],
 //          acc[1..3], base_x/y/z, roll/pitch/yaw, com_x/y/z, foot forces, fallen
 // Step     any h: the plant runs every whole physics step that fits and carries the remainder.
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <string>
 
@@ -22,6 +24,54 @@ namespace {
 
 constexpr int k_servos = darwin::k_servo_count;
 
+// The plant's numeric parameters, ONE list: FMU variable, where it lives in robot_config, how it
+// is declared. The start values and the profile defaults come from robot_config itself.
+struct plant_parameter {
+  const char* name;
+  double& (*field)(robot_config&);
+  const char* unit;
+  double min;
+  double max;
+  const char* description;
+};
+
+// clang-format off
+constexpr plant_parameter k_plant_parameters[] = {
+    {"physics_step", [](robot_config& c) -> double& { return c.physics_step; }, "s", 1e-4, 0.05,
+     "Internal physics step; each doStep runs the whole steps that fit"},
+    {"erp", [](robot_config& c) -> double& { return c.erp; }, "", 0, 1, "World error reduction"},
+    {"cfm", [](robot_config& c) -> double& { return c.cfm; }, "", 0, 1,
+     "World constraint force mixing"},
+    {"friction", [](robot_config& c) -> double& { return c.contact.mu; }, "", 0, 1e3,
+     "Coulomb friction coefficient of contacts"},
+    {"bounce", [](robot_config& c) -> double& { return c.contact.bounce; }, "", 0, 1,
+     "Contact restitution"},
+    {"contact_soft_erp", [](robot_config& c) -> double& { return c.contact.soft_erp; }, "", 0, 1,
+     "Contact softness: error reduction"},
+    {"contact_soft_cfm", [](robot_config& c) -> double& { return c.contact.soft_cfm; }, "", 0, 1,
+     "Contact softness: constraint force mixing"},
+    {"servo_p_gain", [](robot_config& c) -> double& { return c.servo.p_gain; }, "1/s", 0, 1e4,
+     "Velocity target = gain * position error"},
+    {"servo_max_velocity", [](robot_config& c) -> double& { return c.servo.max_velocity; },
+     "rad/s", 0, 1e3, "Servo speed limit"},
+    {"servo_max_acceleration", [](robot_config& c) -> double& { return c.servo.max_acceleration; },
+     "rad/s2", 0, 1e6, "Servo acceleration limit (0: none)"},
+    {"servo_torque_limit", [](robot_config& c) -> double& { return c.servo.torque_limit; }, "N.m",
+     0, 1e3, "Servo torque limit"},
+    {"servo_damping", [](robot_config& c) -> double& { return c.servo.damping; }, "N.m.s/rad", 0,
+     1e3, "Joint viscous damping"},
+    {"servo_static_friction", [](robot_config& c) -> double& { return c.servo.static_friction; },
+     "N.m", 0, 1e3, "Joint static friction"},
+    {"servo_compliance", [](robot_config& c) -> double& { return c.servo.compliance; },
+     "N.m.s/rad", 0, 1e6, "Motor compliance (0: rigid velocity servo)"},
+    {"fall_tilt", [](robot_config& c) -> double& { return c.fall_tilt; }, "rad", 0, 3.2,
+     "fallen when the torso tilts more than this"},
+    {"fall_height", [](robot_config& c) -> double& { return c.fall_height; }, "m", -10, 10,
+     "fallen when the torso origin is lower than this"},
+};
+// clang-format on
+constexpr std::size_t k_plant_parameter_count = std::size(k_plant_parameters);
+
 struct robot_data {
   // inputs
   double joint_target[k_servos];
@@ -29,15 +79,11 @@ struct robot_data {
   double push_x = 0.0;
   double push_y = 0.0;
   // parameters
+  sdk::text profile{"stiff"};
   sdk::text urdf{};
-  double physics_step;
-  int solver;
-  double erp, cfm;
-  double friction, bounce, contact_soft_erp, contact_soft_cfm;
-  double servo_p_gain, servo_max_velocity, servo_max_acceleration, servo_torque_limit;
-  double servo_damping, servo_static_friction, servo_compliance;
+  double plant[k_plant_parameter_count];  // by k_plant_parameters
+  int solver = 0;
   bool weld_arms_and_head = true;
-  double fall_tilt, fall_height;
   // outputs
   double joint_angle[k_servos] = {};
   int gyro_fb = 0;
@@ -52,31 +98,24 @@ struct robot_data {
   bool fallen = false;
   // internal
   int applied_reset = 0;
+  std::uint32_t plant_set_explicitly = 0;  // bit i: k_plant_parameters[i] came from fmi2Set
 
-  // start values: the DARwIn-OP profile of the plant core, standing in the walk-ready pose
+  // start values: the default profile, standing in the walk-ready pose
   robot_data() {
-    const robot_config c = darwin::default_config("");
     const auto pose = darwin::walk_ready_pose();
     for (int i = 0; i < k_servos; ++i) joint_target[i] = pose[static_cast<std::size_t>(i)];
-    physics_step = c.physics_step;
-    solver = c.solver == physics_solver::world_step ? 0 : 1;
-    erp = c.erp;
-    cfm = c.cfm;
-    friction = c.contact.mu;
-    bounce = c.contact.bounce;
-    contact_soft_erp = c.contact.soft_erp;
-    contact_soft_cfm = c.contact.soft_cfm;
-    servo_p_gain = c.servo.p_gain;
-    servo_max_velocity = c.servo.max_velocity;
-    servo_max_acceleration = c.servo.max_acceleration;
-    servo_torque_limit = c.servo.torque_limit;
-    servo_damping = c.servo.damping;
-    servo_static_friction = c.servo.static_friction;
-    servo_compliance = c.servo.compliance;
-    fall_tilt = c.fall_tilt;
-    fall_height = c.fall_height;
+    apply_profile(darwin::plant_profile::stiff);
+  }
+
+  // the profile's value of every plant parameter not set explicitly
+  void apply_profile(darwin::plant_profile p) {
+    robot_config c = darwin::default_config("", p);
+    for (std::size_t i = 0; i < k_plant_parameter_count; ++i) {
+      if ((plant_set_explicitly & (1u << i)) == 0) plant[i] = k_plant_parameters[i].field(c);
+    }
   }
 };
+static_assert(k_plant_parameter_count <= 32);
 
 // the board reports integer counts; Webots truncates the raw value (512 + x) towards zero
 int board_counts(double counts_minus_centre) {
@@ -108,84 +147,28 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
     t.add("push_x", &robot_data::push_x).input().unit("N").describe("Push on the torso, world x");
     t.add("push_y", &robot_data::push_y).input().unit("N").describe("Push on the torso, world y");
 
+    t.add("profile", &robot_data::profile)
+        .parameter()
+        .describe(
+            "Plant profile: stiff (servo P 18, no ramp) or webots (Webots' servo: P 10, "
+            "55 rad/s2 ramp); parameters set explicitly win");
     t.add("urdf", &robot_data::urdf)
         .parameter()
         .describe("URDF to load: a path, or a file in resources/ (empty: darwin-op.urdf)");
-    t.add("physics_step", &robot_data::physics_step)
-        .parameter()
-        .unit("s")
-        .range(1e-4, 0.05)
-        .describe("Internal physics step; each doStep runs the whole steps that fit");
+    const robot_data& d = t.defaults();
+    for (std::size_t i = 0; i < k_plant_parameter_count; ++i) {
+      const plant_parameter& p = k_plant_parameters[i];
+      sdk::variable_group v = t.add_field(p.name, d.plant[i]);
+      v.parameter().range(p.min, p.max).describe(p.description);
+      if (*p.unit != '\0') v.unit(p.unit);
+    }
     t.add("solver", &robot_data::solver)
         .parameter()
         .range(0, 1)
         .describe("0 = dWorldStep (deterministic), 1 = dWorldQuickStep (faster, not reproducible)");
-    t.add("erp", &robot_data::erp).parameter().range(0, 1).describe("World error reduction");
-    t.add("cfm", &robot_data::cfm)
-        .parameter()
-        .range(0, 1)
-        .describe("World constraint force mixing");
-    t.add("friction", &robot_data::friction)
-        .parameter()
-        .range(0, 1e3)
-        .describe("Coulomb friction coefficient of contacts");
-    t.add("bounce", &robot_data::bounce).parameter().range(0, 1).describe("Contact restitution");
-    t.add("contact_soft_erp", &robot_data::contact_soft_erp)
-        .parameter()
-        .range(0, 1)
-        .describe("Contact softness: error reduction");
-    t.add("contact_soft_cfm", &robot_data::contact_soft_cfm)
-        .parameter()
-        .range(0, 1)
-        .describe("Contact softness: constraint force mixing");
-    t.add("servo_p_gain", &robot_data::servo_p_gain)
-        .parameter()
-        .unit("1/s")
-        .range(0, 1e4)
-        .describe("Velocity target = gain * position error");
-    t.add("servo_max_velocity", &robot_data::servo_max_velocity)
-        .parameter()
-        .unit("rad/s")
-        .range(0, 1e3)
-        .describe("Servo speed limit");
-    t.add("servo_max_acceleration", &robot_data::servo_max_acceleration)
-        .parameter()
-        .unit("rad/s2")
-        .range(0, 1e6)
-        .describe("Servo acceleration limit (0: none)");
-    t.add("servo_torque_limit", &robot_data::servo_torque_limit)
-        .parameter()
-        .unit("N.m")
-        .range(0, 1e3)
-        .describe("Servo torque limit");
-    t.add("servo_damping", &robot_data::servo_damping)
-        .parameter()
-        .unit("N.m.s/rad")
-        .range(0, 1e3)
-        .describe("Joint viscous damping");
-    t.add("servo_static_friction", &robot_data::servo_static_friction)
-        .parameter()
-        .unit("N.m")
-        .range(0, 1e3)
-        .describe("Joint static friction");
-    t.add("servo_compliance", &robot_data::servo_compliance)
-        .parameter()
-        .unit("N.m.s/rad")
-        .range(0, 1e6)
-        .describe("Motor compliance (0: rigid velocity servo)");
     t.add("weld_arms_and_head", &robot_data::weld_arms_and_head)
         .parameter()
         .describe("Hold servos 3-6, 19, 20 rigid in the walk-ready pose (about 2x faster)");
-    t.add("fall_tilt", &robot_data::fall_tilt)
-        .parameter()
-        .unit("rad")
-        .range(0, 3.2)
-        .describe("fallen when the torso tilts more than this");
-    t.add("fall_height", &robot_data::fall_height)
-        .parameter()
-        .unit("m")
-        .range(-10, 10)
-        .describe("fallen when the torso origin is lower than this");
 
     t.add("joint_angle", &robot_data::joint_angle)
         .output()
@@ -224,6 +207,17 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
         .output()
         .describe("Torso tilt past fall_tilt or torso below fall_height (held until reset)");
     return t.finish();
+  }
+
+  void on_set(const sdk::variable& v) override {
+    if (v.causality_kind != sdk::causality::parameter) return;
+    if (v.name == "profile") {
+      data_.apply_profile(profile());
+      return;
+    }
+    for (std::size_t i = 0; i < k_plant_parameter_count; ++i) {
+      if (v.name == k_plant_parameters[i].name) data_.plant_set_explicitly |= 1u << i;
+    }
   }
 
   void exit_initialization() override {
@@ -284,26 +278,22 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
     return path.string();
   }
 
+  darwin::plant_profile profile() const {
+    const auto p = darwin::parse_plant_profile(data_.profile.view());
+    if (!p) {
+      throw sdk::model_error("profile '" + std::string(data_.profile.view()) +
+                             "' is not a plant profile (stiff, webots)");
+    }
+    return *p;
+  }
+
   void build_plant() {
-    robot_config c = darwin::default_config(urdf_path());
-    c.physics_step = data_.physics_step;
+    robot_config c = darwin::default_config(urdf_path(), profile());
+    for (std::size_t i = 0; i < k_plant_parameter_count; ++i) {
+      k_plant_parameters[i].field(c) = data_.plant[i];
+    }
     c.solver = data_.solver == 0 ? physics_solver::world_step : physics_solver::quick_step;
-    c.erp = data_.erp;
-    c.cfm = data_.cfm;
-    c.contact.mu = data_.friction;
-    c.contact.bounce = data_.bounce;
-    c.contact.soft_erp = data_.contact_soft_erp;
-    c.contact.soft_cfm = data_.contact_soft_cfm;
-    c.servo.p_gain = data_.servo_p_gain;
-    c.servo.max_velocity = data_.servo_max_velocity;
-    c.servo.max_acceleration = data_.servo_max_acceleration;
-    c.servo.torque_limit = data_.servo_torque_limit;
-    c.servo.damping = data_.servo_damping;
-    c.servo.static_friction = data_.servo_static_friction;
-    c.servo.compliance = data_.servo_compliance;
     if (!data_.weld_arms_and_head) c.rigid_servos.clear();
-    c.fall_tilt = data_.fall_tilt;
-    c.fall_height = data_.fall_height;
     sim_ = std::make_unique<robot_sim>(std::move(c));
     if (sim_->servo_count() > k_servos) {
       throw sdk::model_error(urdf_path() + ": servo IDs above " + std::to_string(k_servos) +

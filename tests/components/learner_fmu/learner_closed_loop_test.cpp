@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "../../orchestrator/process.hpp"
@@ -47,7 +48,7 @@ TEST(learner_closed_loop, a_few_rl_steps_with_the_real_fmus) {
   EXPECT_EQ(count_lines(read_all(out / "steps.csv")), 7u);     // header + 6 steps
   EXPECT_EQ(count_lines(read_all(out / "episodes.csv")), 3u);  // header + 2 episodes
   EXPECT_EQ(count_lines(read_all(out / "v_table.csv")), 456u);
-  EXPECT_THAT(read_all(out / "best.txt"), HasSubstr("RL steps: 6, episodes: 2"));
+  EXPECT_THAT(read_all(out / "best.txt"), HasSubstr("protocol: paper\nRL steps: 6, episodes: 2"));
   EXPECT_THAT(read_all(out / "config.ini"), HasSubstr("balance_hip_roll_gain=0.000000"));
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
   EXPECT_THAT(read_all(out / "system.xml"), HasSubstr("${output_dir}"));  // kept for --resume
@@ -63,6 +64,38 @@ TEST(learner_closed_loop, a_few_rl_steps_with_the_real_fmus) {
     max_speed = std::max(max_speed, std::stod(cells[9]));
   }
   EXPECT_GT(max_speed, 3.0) << "cm/s";
+}
+
+// evaluation.csv as a map header → value
+std::map<std::string, std::string> read_evaluation(const fs::path& file) {
+  std::istringstream in(read_all(file));
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  std::map<std::string, std::string> out;
+  std::stringstream h(header), r(row);
+  for (std::string k, v; std::getline(h, k, ',') && std::getline(r, v, ',');) out[k] = v;
+  return out;
+}
+
+TEST(learner_closed_loop, the_authors_code_evaluation_reports_twice_the_physical_speed) {
+  temp_dir scratch("stride-learner-eval-");
+  run_options o;
+  o.output_dir = scratch.path() / "run";
+  o.progress = false;
+  o.build.log = stderr_log_sink(log_level::warning);
+  o.stop = time_point{} + parse_duration("20");
+  o.overrides = {"eval.protocol=authors-code", "eval.eval_point=600,20", "robot.profile=webots"};
+  run_system(
+      parse_system_file(fs::path(STRIDE_SOURCE_DIR) / "models/experiments/evaluate-point.xml"), o);
+  const auto e = read_evaluation(o.output_dir / "evaluation.csv");
+  EXPECT_EQ(e.at("protocol"), "authors-code");
+  EXPECT_EQ(e.at("windows"), "4");  // 4.8 s windows (8 periods of 600 ms) in 20 s
+  EXPECT_EQ(std::stod(e.at("measured_time")), 4 * 4.8);
+  const double reported = std::stod(e.at("mean_speed"));
+  const double physical = std::stod(e.at("physical_speed"));
+  EXPECT_GT(physical, 3.0);
+  EXPECT_NEAR(reported, 2 * physical, 1e-12 * physical);
 }
 
 class learner_resume : public ::testing::Test {

@@ -356,6 +356,145 @@ TEST(learner_session, an_episode_ends_after_10_falls) {
   EXPECT_EQ(r2.episodes[0].reward, -4000.0);
 }
 
+// ---------------------------------------------------------------------------------------------
+// protocols
+
+TEST(learner_protocol, names_and_the_authors_controller_settings) {
+  EXPECT_EQ(parse_protocol("paper"), protocol::paper);
+  EXPECT_EQ(parse_protocol("authors-code"), protocol::authors_code);
+  EXPECT_EQ(parse_protocol("authors"), std::nullopt);
+  EXPECT_EQ(to_string(protocol::authors_code), "authors-code");
+  const learner_config paper = protocol_defaults(protocol::paper);
+  EXPECT_EQ(paper.td.lambda, 0.05);
+  EXPECT_EQ(paper.reward.negative_reward, -400);
+  EXPECT_EQ(paper.steps_per_episode, 40);
+  EXPECT_EQ(paper.reward.speed_cap, 0);
+  EXPECT_TRUE(paper.balance);
+  const learner_config a = protocol_defaults(protocol::authors_code);
+  EXPECT_EQ(a.rules, protocol::authors_code);
+  EXPECT_EQ(a.td.lambda, 0.3);
+  EXPECT_EQ(a.td.alpha, 0.1);
+  EXPECT_EQ(a.td.gamma, 0.9);
+  EXPECT_EQ(a.epsilon, 0.15);
+  EXPECT_EQ(a.reward.negative_reward, -200);
+  EXPECT_EQ(a.steps_per_episode, 30);
+  EXPECT_EQ(a.max_falls, 10);
+  EXPECT_EQ(a.footsteps_per_step, 4);
+  EXPECT_EQ(a.settle_footsteps, 0);
+  EXPECT_FALSE(a.balance);
+  // the controller's reward: pow(10, (v + 1e-5)/10)/3 below 30 cm/s, 50 from there
+  for (double v : {0.0, 7.5, 20.0, 29.99}) {
+    EXPECT_NEAR(step_reward(v, false, a.reward), std::pow(10.0, (v + 1e-5) / 10) / 3, 1e-12);
+  }
+  EXPECT_EQ(step_reward(30.0, false, a.reward), 50.0);
+  EXPECT_EQ(step_reward(45.0, false, a.reward), 50.0);
+  EXPECT_EQ(step_reward(45.0, true, a.reward), -200.0);
+  // its window is timed in periods: the grid must have one
+  learner_config no_period = a;
+  no_period.grid = state_grid::parse("swing_right_left:15:39:2");
+  EXPECT_THAT(error_of([&] { no_period.validate(); }), HasSubstr("period_time dimension"));
+  EXPECT_THAT(a.canonical(), HasSubstr("protocol=authors-code\n"));
+}
+
+// A plant walking at `speed(values)` m/s, stepped every 16 ms like the authors' controller;
+// falls when fall(values) is true.
+struct timed_plant {
+  double x = 0;
+  int footsteps = 0;
+  bool fallen = false;
+  int seen_restarts = -1;
+  std::function<double(const std::vector<double>&)> speed = [](auto&) { return 0.1; };
+  std::function<bool(const std::vector<double>&)> fall = [](auto&) { return false; };
+
+  plant_inputs step(const session& s, const session_state& st, double h) {
+    if (st.restarts != seen_restarts) {
+      seen_restarts = st.restarts;
+      x = 0;
+      fallen = false;
+      return {x, 0, fallen, footsteps};
+    }
+    const auto values = s.current_values();
+    if (fall(values)) fallen = true;
+    if (!fallen) x += speed(values) * h;
+    return {x, 0, fallen, footsteps};
+  }
+};
+
+run_result run_timed(learner_config c, timed_plant plant, int max_calls = 1'000'000) {
+  session_state st;
+  dense_value_table v(c.grid.size(), c.initial_value);
+  eligibility_traces z;
+  session s(c, st, v, z);
+  s.start();
+  run_result out;
+  for (int i = 0; i < max_calls; ++i) {
+    const auto r = s.advance(plant.step(s, st, 0.016), 16'000'000);
+    if (r.step) out.steps.push_back(*r.step);
+    if (r.episode) out.episodes.push_back(*r.episode);
+    if (r.finished) break;
+    if (r.episode) s.begin_episode();
+  }
+  out.values = v.values();
+  return out;
+}
+
+TEST(learner_session, authors_code_windows_last_2w_periods_and_report_twice_the_speed) {
+  learner_config c = protocol_defaults(protocol::authors_code);
+  c.grid = state_grid::parse("period_time:450:750:150,swing_right_left:15:35:10");
+  c.total_steps = 60;
+  timed_plant p;
+  p.speed = [](const std::vector<double>& v) { return v[1] == 35 ? 0.001 : 0.08; };
+  const auto r = run_timed(c, p);
+  ASSERT_EQ(r.steps.size(), 60u);
+  int slow = 0;
+  for (const auto& s : r.steps) {
+    ASSERT_FALSE(s.fell);
+    // ceil(period/8 * W) control iterations of 16 ms: 8 periods for 600 and 750 ms
+    const double period = s.values[0];
+    const double iterations = std::ceil(period / 8 * 4);
+    EXPECT_NEAR(s.duration, iterations * 0.016, 1e-12) << "period " << period;
+    if (s.distance <= 0.01) {
+      ++slow;  // less than 1 cm counts as standing still
+      EXPECT_EQ(s.speed, 0.0);
+      EXPECT_NEAR(s.reward, std::pow(10.0, 1e-6) / 3, 1e-15);
+      continue;
+    }
+    // these periods give whole iterations, so the window is exactly 2·W periods and the speed
+    // exactly twice the physical speed of the same window
+    EXPECT_EQ(s.speed, 2 * (100 * s.distance / s.duration)) << "period " << period;
+    EXPECT_NEAR(s.speed, 100 * s.distance / (4 * period / 1000), 1e-9);
+  }
+  EXPECT_GT(slow, 0);
+}
+
+TEST(learner_session, authors_code_episodes_end_after_more_than_30_steps_in_a_row_without_a_fall) {
+  learner_config c = protocol_defaults(protocol::authors_code);
+  c.grid = state_grid::parse("period_time:450:750:150,swing_right_left:15:35:10");
+  c.total_steps = 93;
+  const auto r = run_timed(c, timed_plant{});
+  ASSERT_EQ(r.episodes.size(), 3u);
+  for (const auto& e : r.episodes) EXPECT_EQ(e.steps, 31);
+  // a plant that always falls: the episode ends at the 11th fall
+  timed_plant always;
+  always.fall = [](auto&) { return true; };
+  c.total_steps = 33;
+  const auto r2 = run_timed(c, always);
+  ASSERT_EQ(r2.episodes.size(), 3u);
+  EXPECT_EQ(r2.episodes[0].steps, 11);
+  EXPECT_EQ(r2.episodes[0].falls, 11);
+  EXPECT_EQ(r2.episodes[0].reward, -2200.0);
+  // one fall restarts the count, the falling step counting as the first: 1 + 30 more steps
+  timed_plant once;
+  int calls = 0;
+  once.fall = [&calls](auto&) { return ++calls == 400; };  // in the second window (225..375 each)
+  c.total_steps = 32;
+  const auto r3 = run_timed(c, once);
+  ASSERT_FALSE(r3.episodes.empty());
+  EXPECT_TRUE(r3.steps[1].fell);
+  EXPECT_EQ(r3.episodes[0].falls, 1);
+  EXPECT_EQ(r3.episodes[0].steps, 32);
+}
+
 TEST(learner_session, same_seed_gives_an_identical_value_table) {
   learner_config c = small_config();
   c.total_steps = 2000;

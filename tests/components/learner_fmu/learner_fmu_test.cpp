@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "../../orchestrator/mock_component.hpp"
+#include "raw_fmu.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
@@ -217,6 +218,44 @@ TEST(learner_fmu, placeholders_are_substituted_and_unknown_ones_rejected) {
   EXPECT_EQ(c.parameters[1].value, "/runs/a");
   s.set("learner.grid", "${grid}");
   EXPECT_THROW(substitute_placeholders(s, "/x", ""), validation_error);
+}
+
+TEST(learner_fmu, protocols_give_their_documented_settings_and_explicit_sets_win) {
+  stride::test::raw_fmu f(k_learner_fmu);
+  // values are readable from initialization mode on
+  const auto enter_initialization = [&f](fmi2Component c) {
+    ASSERT_EQ(f.fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
+    ASSERT_EQ(f.fmi2EnterInitializationMode(c), fmi2OK) << f.last_message();
+  };
+  fmi2Component paper = f.instantiate("paper");  // the default
+  enter_initialization(paper);
+  EXPECT_EQ(f.real(paper, "lambda"), 0.05);
+  EXPECT_EQ(f.real(paper, "negative_reward"), -400.0);
+  EXPECT_EQ(f.integer(paper, "steps_per_episode"), 40);
+  EXPECT_EQ(f.integer(paper, "settle_footsteps"), 1);
+  EXPECT_EQ(f.real(paper, "speed_cap"), 0.0);
+  EXPECT_TRUE(f.boolean(paper, "balance"));
+
+  fmi2Component authors = f.instantiate("authors");
+  ASSERT_EQ(f.set_real(authors, "alpha", 0.2), fmi2OK);
+  ASSERT_EQ(f.set_string(authors, "protocol", "authors-code"), fmi2OK);
+  ASSERT_EQ(f.set_integer(authors, "max_falls", 5), fmi2OK);
+  enter_initialization(authors);
+  EXPECT_EQ(f.real(authors, "lambda"), 0.3);
+  EXPECT_EQ(f.real(authors, "negative_reward"), -200.0);
+  EXPECT_EQ(f.integer(authors, "steps_per_episode"), 30);
+  EXPECT_EQ(f.integer(authors, "settle_footsteps"), 0);
+  EXPECT_EQ(f.real(authors, "speed_cap"), 30.0);
+  EXPECT_EQ(f.real(authors, "capped_reward"), 50.0);
+  EXPECT_EQ(f.real(authors, "k1"), std::pow(10.0, 1e-6) / 3);
+  EXPECT_FALSE(f.boolean(authors, "balance"));
+  EXPECT_EQ(f.real(authors, "alpha"), 0.2);  // set explicitly, before or after: kept
+  EXPECT_EQ(f.integer(authors, "max_falls"), 5);
+
+  fmi2Component bad = f.instantiate("bad");
+  EXPECT_EQ(f.set_string(bad, "protocol", "webots"), fmi2Error);
+  EXPECT_TRUE(f.logged("protocol 'webots' is not a learner protocol (paper, authors-code)"))
+      << f.last_message();
 }
 
 }  // namespace

@@ -25,8 +25,9 @@ struct walk_result {
 // stands 1 s, then walks forward with x_move for `duration` s; the gait sends IDs 1..18 like the
 // Webots gait manager, reading the gyro every 8 ms tick
 walk_result walk(const gait::walking_params& params, double x_move, double duration,
-                 double gyro_sign = 1.0) {
-  robot_sim sim(darwin::default_config(k_darwin));
+                 double gyro_sign = 1.0,
+                 darwin::plant_profile profile = darwin::plant_profile::stiff) {
+  robot_sim sim(darwin::default_config(k_darwin, profile));
   const auto& o = sim.outputs();
   sim.step(1.0);
   const gait::walking gen;
@@ -76,6 +77,21 @@ TEST(darwin_walking, falls_with_extreme_sway_and_period) {
   const walk_result r = walk(p, 20.0, 60.0);
   std::printf("[ figure ] extreme gait fell after %.2f s\n", r.time);
   EXPECT_TRUE(r.fallen);
+}
+
+TEST(darwin_walking, the_webots_profile_walks_the_default_gait_and_falls_with_the_extreme_one) {
+  const walk_result r = walk(webots_params(), 20.0, 60.0, 1.0, darwin::plant_profile::webots);
+  ASSERT_FALSE(r.fallen) << "fell after " << r.time << " s";
+  const double speed = r.distance / r.time;
+  std::printf("[ figure ] webots profile: forward speed %.4f m/s over %.0f s\n", speed, r.time);
+  // the lagging servo shortens the stride: slower than the stiff profile, above half the
+  // kinematic 4 * x_move / period_time = 0.133 m/s
+  EXPECT_GT(speed, 0.07);
+  EXPECT_LT(speed, 0.12);
+  gait::walking_params extreme = webots_params();
+  extreme.swing_right_left = 39.0;
+  extreme.period_time = 450.0;
+  EXPECT_TRUE(walk(extreme, 20.0, 60.0, 1.0, darwin::plant_profile::webots).fallen);
 }
 
 TEST(darwin_walking, reversed_gyro_sign_destabilises_the_gait) {

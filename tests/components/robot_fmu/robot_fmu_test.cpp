@@ -126,5 +126,42 @@ TEST(robot_fmu, physics_settings_are_checked) {
   EXPECT_EQ(f.set_real(c, "friction", 0.5), fmi2Error);  // fixed after initialization
 }
 
+// values are readable from initialization mode on
+void enter_initialization(raw_fmu& f, fmi2Component c) {
+  ASSERT_EQ(f.fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
+  ASSERT_EQ(f.fmi2EnterInitializationMode(c), fmi2OK);
+}
+
+TEST(robot_fmu, profiles_give_their_documented_servo_and_explicit_sets_win) {
+  raw_fmu f(robot_fmu_path());
+  fmi2Component stiff = f.instantiate("stiff");  // the default
+  enter_initialization(f, stiff);
+  EXPECT_EQ(f.real(stiff, "servo_p_gain"), 18.0);
+  EXPECT_EQ(f.real(stiff, "servo_max_acceleration"), 0.0);
+
+  fmi2Component webots = f.instantiate("webots");
+  ASSERT_EQ(f.set_string(webots, "profile", "webots"), fmi2OK);
+  enter_initialization(f, webots);
+  EXPECT_EQ(f.real(webots, "servo_p_gain"), 10.0);
+  EXPECT_EQ(f.real(webots, "servo_max_acceleration"), 55.0);
+  EXPECT_EQ(f.real(webots, "physics_step"), 0.016);  // shared by both profiles
+  EXPECT_EQ(f.real(webots, "friction"), 1.0);
+
+  // an explicit set wins, before or after the profile
+  fmi2Component mixed = f.instantiate("mixed");
+  ASSERT_EQ(f.set_real(mixed, "servo_p_gain", 12.0), fmi2OK);
+  ASSERT_EQ(f.set_string(mixed, "profile", "webots"), fmi2OK);
+  ASSERT_EQ(f.set_real(mixed, "servo_max_acceleration", 40.0), fmi2OK);
+  enter_initialization(f, mixed);
+  EXPECT_EQ(f.real(mixed, "servo_p_gain"), 12.0);
+  EXPECT_EQ(f.real(mixed, "servo_max_acceleration"), 40.0);
+  EXPECT_EQ(f.real(mixed, "servo_max_velocity"), 12.26);
+
+  fmi2Component bad = f.instantiate("bad");
+  EXPECT_EQ(f.set_string(bad, "profile", "soft"), fmi2Error);
+  EXPECT_TRUE(f.logged("profile 'soft' is not a plant profile (stiff, webots)"))
+      << f.last_message();
+}
+
 }  // namespace
 }  // namespace stride::test

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -53,6 +54,8 @@ class state_grid {
 
   const std::vector<grid_dimension>& dimensions() const { return dims_; }
   std::size_t dimension_count() const { return dims_.size(); }
+  /// Position of the dimension called `name`, or nullopt.
+  std::optional<std::size_t> dimension(std::string_view name) const;
   std::size_t size() const { return size_; }
 
   /// Index of a state from per-dimension indices.

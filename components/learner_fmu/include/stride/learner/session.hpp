@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -32,10 +33,29 @@ enum class learner_mode : int {
   evaluate = 1,  ///< walk with fixed parameters and measure (no learning, no episodes)
 };
 
+/// How RL steps are walked and measured and when an episode ends (docs/learner.md, "Protocols").
+/// The numbers (λ, rewards, W, episode length) are settings of their own whose defaults the
+/// protocol chooses (see protocol_defaults).
+enum class protocol : int {
+  /// the study's text: settle_footsteps, then W footsteps measured; speed = distance / measured
+  /// time; an episode ends after steps_per_episode steps or max_falls falls
+  paper = 0,
+  /// the authors' Webots controller: a window of 2·W·period_time (in whole 16 ms control
+  /// iterations) from the step's start; speed = distance / (W·period_time), 0 below 1 cm; an
+  /// episode ends when more than steps_per_episode steps in a row passed without a fall (the
+  /// falling step counts as the first) or after more than max_falls falls
+  authors_code = 1,
+};
+
+/// "paper" or "authors-code"; nullopt for any other name.
+std::optional<protocol> parse_protocol(std::string_view name);
+std::string_view to_string(protocol p);
+
 /// Everything fixed for a run; defaults are the paper's Table 2 and Experiment 1.
 struct learner_config {
   state_grid grid = state_grid::parse("period_time:450:960:15,swing_right_left:15:39:2");
   learner_mode mode = learner_mode::learn;
+  protocol rules = protocol::paper;
   std::vector<double> eval_point;  ///< evaluate: one value per grid dimension
   td_params td{};
   double epsilon = 0.15;
@@ -48,8 +68,10 @@ struct learner_config {
   std::uint64_t seed = 1;
   std::int64_t total_steps = 0;  ///< the run ends after this many RL steps; 0 = never
   double step_timeout = 60.0;    ///< s of simulated time in one phase without enough footsteps
+  bool balance = true;           ///< gyro balance on (balance_on is false after a restart anyway)
 
-  /// Throws learner_error naming the first setting out of its range.
+  /// Throws learner_error naming the first setting out of its range (or, for authors_code, a
+  /// grid without a period_time dimension).
   void validate() const;
   /// Every setting that shapes the learning as "key=value" lines, to check that a checkpoint
   /// belongs to this configuration.
@@ -82,13 +104,22 @@ struct session_state {
   std::int64_t phase_start_ns = 0;
   double x0 = 0, y0 = 0;  ///< torso at the start of the measurement
   std::int64_t t0_ns = 0;
-  int restarts = 0;              ///< counter output: robot reset and gait restart
-  bool restart_pending = false;  ///< a restart was output at the previous step
-  bool balance_gate = false;     ///< false on the one step right after a restart
-  double eval_distance = 0;      ///< evaluate: Σ distance of the measured windows, m
-  double eval_time = 0;          ///< evaluate: Σ duration of the measured windows, s
+  std::int64_t window_end_ns = 0;  ///< authors_code: end of the measurement window
+  int steps_without_fall = 0;      ///< authors_code: the episode length rule
+  double eval_speed_sum = 0;       ///< evaluate: Σ speed of the windows without a fall, cm/s
+  int restarts = 0;                ///< counter output: robot reset and gait restart
+  bool restart_pending = false;    ///< a restart was output at the previous step
+  bool balance_gate = false;       ///< false on the one step right after a restart
+  double eval_distance = 0;        ///< evaluate: Σ distance of the measured windows, m
+  double eval_time = 0;            ///< evaluate: Σ duration of the measured windows, s
+  std::int64_t eval_windows = 0;   ///< evaluate: windows without a fall
 };
 static_assert(std::is_trivially_copyable_v<session_state>);
+
+/// The settings a protocol implies: Table 2 for paper; config.h and Walk.cpp of the authors'
+/// controller for authors_code (λ 0.3, −200 per fall, 30 steps, the capped reward
+/// 10^((v + 1e-5)/10)/3 below 30 cm/s and 50 from there, no settle footstep, balance off).
+learner_config protocol_defaults(protocol p);
 
 /// The plant as the learner sees it at a communication point.
 struct plant_inputs {
@@ -157,12 +188,18 @@ class session {
 
   /// Gait parameter values to output now (grid values of the state, or the evaluation point).
   std::vector<double> current_values() const;
+  /// Evaluate mode: the mean speed of the protocol (paper: Σ distance / Σ time; authors_code:
+  /// the mean of the window speeds), cm/s; 0 before the first window.
+  double mean_speed() const;
   walk_phase phase() const { return static_cast<walk_phase>(st_.phase); }
   const learner_config& config() const { return cfg_; }
 
  private:
   void restart();
   void start_measuring(const plant_inputs& in);
+  double period_time_ms() const;
+  double window_speed(double distance, double duration) const;
+  bool episode_over() const;
   void finish_step(advance_report& r, const plant_inputs& in, bool fell, double distance,
                    double duration);
 

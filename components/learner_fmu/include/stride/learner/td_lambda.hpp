@@ -94,9 +94,12 @@ struct reward_params {
   double k1 = 0.33;               ///< K1
   double k2 = 10.0;               ///< K2, cm/s
   double negative_reward = -400;  ///< reward of a step in which the robot fell
+  double speed_cap = 0;  ///< cm/s; from this speed on the reward is capped_reward (0: none)
+  double capped_reward = 0;
 };
 
-/// r = negative_reward after a fall, else K1 · 10^(speed / K2) with speed in cm/s.
+/// r = negative_reward after a fall, capped_reward when speed_cap > 0 and speed ≥ speed_cap,
+/// else K1 · 10^(speed / K2) with speed in cm/s.
 double step_reward(double speed_cm_per_s, bool fell, const reward_params& p);
 
 /// The state with the largest V (the lowest index among equals).

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "stride/robot/robot_config.hpp"
 
@@ -27,18 +29,27 @@ std::array<double, k_servo_count> walk_ready_pose();
 inline constexpr double k_walk_ready_torso_height = 0.317;
 inline constexpr double k_walk_ready_lean_deg = 12.94;
 
-/// Servo P gain of the DARwIn profile, 1/s (Webots: 10; see models/darwin-op/README.md).
-inline constexpr double k_servo_p_gain = 18.0;
-
-/// Physics step of the DARwIn profile, s: Webots' basicTimeStep in the DARwIn-OP worlds.
+/// Physics step of the DARwIn profiles, s: Webots' basicTimeStep in the DARwIn-OP worlds.
 inline constexpr double k_physics_step = 0.016;
 
-/// The plant configuration used by the framework for the DARwIn-OP (models/darwin-op/README.md):
-/// fact-sheet physics and contacts, walk-ready start pose, IMU/feet links of
-/// models/darwin-op/darwin-op.urdf. Departures from the robot_config defaults: physics_step =
-/// k_physics_step, servo p_gain = k_servo_p_gain with no acceleration limit, and rigid_servos =
-/// {3, 4, 5, 6, 19, 20} (arms and head welded in the walk-ready pose; clear it to drive all 20
-/// servos).
-robot_config default_config(const std::string& urdf_path);
+/// Named plant settings of the DARwIn-OP; they differ only in the servo response
+/// (models/darwin-op/README.md, "Plant profiles").
+enum class plant_profile {
+  /// servo P = 18 1/s without an acceleration ramp: follows the gait closely (the default)
+  stiff,
+  /// Webots' own servo: P = 10 1/s with a 55 rad/s² ramp, as in the study's simulator
+  webots,
+};
+
+/// "stiff" or "webots"; nullopt for any other name.
+std::optional<plant_profile> parse_plant_profile(std::string_view name);
+std::string_view to_string(plant_profile profile);
+
+/// The plant configuration of the DARwIn-OP (models/darwin-op/README.md): Webots' world and
+/// contact settings, walk-ready start pose, IMU/feet links of models/darwin-op/darwin-op.urdf,
+/// physics_step = k_physics_step, rigid_servos = {3, 4, 5, 6, 19, 20} (arms and head welded in
+/// the walk-ready pose; clear it to drive all 20 servos) and the servo of `profile`.
+robot_config default_config(const std::string& urdf_path,
+                            plant_profile profile = plant_profile::stiff);
 
 }  // namespace stride::robot::darwin
