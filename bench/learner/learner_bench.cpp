@@ -25,7 +25,7 @@ void closed_loop_rl_steps(benchmark::State& state) {
   build_options options;
   options.log = stderr_log_sink(log_level::warning);
   built_system built = build_system(system, options);
-  auto& algo = built.execution->algorithm();
+  auto& algo = *built.execution;
   const auto rl_vars = find_variables(algo, "learner.rl_step");
   if (rl_vars.size() != 1) {
     state.SkipWithError("no learner.rl_step");

@@ -29,31 +29,32 @@ void hand_written_loop(benchmark::State& state) {
   const auto interface = fmu::load(file);
   const auto& md = interface->model_description();
   auto vr = [&](const char* name) { return md.find(name)->reference; };
-  const std::array<value_reference, 4> outs{vr("y"), vr("vec_out[1]"), vr("vec_out[2]"),
-                                            vr("vec_out[3]")};
-  const std::array<value_reference, 4> ins{vr("u"), vr("vec_in[1]"), vr("vec_in[2]"),
-                                           vr("vec_in[3]")};
+  variable_refs outs, ins;
+  outs.reals = {vr("y"), vr("vec_out[1]"), vr("vec_out[2]"), vr("vec_out[3]")};
+  ins.reals = {vr("u"), vr("vec_in[1]"), vr("vec_in[2]"), vr("vec_in[3]")};
   for (auto _ : state) {
     state.PauseTiming();
     // loaded afresh, as build_system does for stride_execution: both start on cold pages
     const auto f = fmu::load(file);
     auto a = f->instantiate("a", {quiet(), false});
     auto b = f->instantiate("b", {quiet(), false});
+    a->expose({}, outs);
+    b->expose(ins, outs);  // b's outputs: what a recorder of b would read
     for (auto* c : {a.get(), b.get()}) {
       c->setup(time_point{}, time_point{} + k_steps * k_step);
       c->enter_initialization();
       c->exit_initialization();
     }
-    std::array<double, 4> values{};
+    const value_block none;
+    value_block a_out, b_out;
+    a_out.resize_for(outs);
+    b_out.resize_for(outs);
     state.ResumeTiming();
     for (int k = 0; k < k_steps; ++k) {
       const time_point t{k * k_step};
-      a->do_step(t, k_step);
-      a->get_real(outs, values);
-      b->set_real(ins, values);
-      b->do_step(t, k_step);
-      b->get_real(outs, values);  // what a recorder of b would read
-      benchmark::DoNotOptimize(values);
+      a->step(t, k_step, none, a_out);
+      b->step(t, k_step, a_out, b_out);
+      benchmark::DoNotOptimize(b_out);
     }
   }
   state.SetItemsProcessed(state.iterations() * k_steps);
@@ -72,9 +73,9 @@ void stride_execution(benchmark::State& state) {
   for (auto _ : state) {
     state.PauseTiming();
     auto built = build_system(s, o);
-    auto& algo = built.execution->algorithm();
+    auto& algo = *built.execution;
     for (const char* v : {"y", "vec_out[1]", "vec_out[2]", "vec_out[3]"}) {
-      algo.observe({1, *algo.component_at(1).model_description().index_of(v)});
+      algo.observe(variable_id{1, *algo.component_at(1).model_description().index_of(v)});
     }
     built.execution->initialize(built.stop);
     state.ResumeTiming();
@@ -92,14 +93,14 @@ constexpr int k_walk_steps = 1250;
 const duration k_walk_step{8'000'000};
 
 void set_walk_parameters(component& gait, const model_description& md) {
-  const std::array<value_reference, 3> reals{md.find("x_move")->reference,
-                                             md.find("balance_hip_roll_gain")->reference,
-                                             md.find("balance_ankle_roll_gain")->reference};
-  const std::array<double, 3> values{20.0, 0.0, 0.0};
-  gait.set_real(reals, values);
-  const std::array<value_reference, 1> walking{md.find("walking")->reference};
-  const std::array<bool, 1> on{true};
-  gait.set_boolean(walking, on);
+  variable_refs refs;
+  refs.reals = {md.find("x_move")->reference, md.find("balance_hip_roll_gain")->reference,
+                md.find("balance_ankle_roll_gain")->reference};
+  refs.booleans = {md.find("walking")->reference};
+  value_block values;
+  values.reals = {20.0, 0.0, 0.0};
+  values.booleans = {true};
+  gait.set_values(refs, values);
 }
 
 void hand_written_walk(benchmark::State& state) {
@@ -110,16 +111,15 @@ void hand_written_walk(benchmark::State& state) {
   const auto robot_interface = fmu::load(robot_file);
   const auto& gm = gait_interface->model_description();
   const auto& rm = robot_interface->model_description();
-  std::array<value_reference, 20> angles{}, targets{};
-  for (int i = 0; i < 20; ++i) {
-    const std::string index = "[" + std::to_string(i + 1) + "]";
-    angles[static_cast<std::size_t>(i)] = gm.find("joint_angle" + index)->reference;
-    targets[static_cast<std::size_t>(i)] = rm.find("joint_target" + index)->reference;
+  // what each component sets and returns with every step
+  variable_refs gait_in, gait_out, robot_in, robot_out;
+  for (int i = 1; i <= 20; ++i) {
+    const std::string index = "[" + std::to_string(i) + "]";
+    gait_out.reals.push_back(gm.find("joint_angle" + index)->reference);
+    robot_in.reals.push_back(rm.find("joint_target" + index)->reference);
   }
-  const std::array<value_reference, 2> gyro_out{rm.find("gyro_fb")->reference,
-                                                rm.find("gyro_rl")->reference};
-  const std::array<value_reference, 2> gyro_in{gm.find("gyro_fb")->reference,
-                                               gm.find("gyro_rl")->reference};
+  robot_out.integers = {rm.find("gyro_fb")->reference, rm.find("gyro_rl")->reference};
+  gait_in.integers = {gm.find("gyro_fb")->reference, gm.find("gyro_rl")->reference};
   for (auto _ : state) {
     state.PauseTiming();
     // loaded afresh, as build_system does for stride_walk: both loops then start on cold
@@ -129,22 +129,21 @@ void hand_written_walk(benchmark::State& state) {
     auto gait = gait_fmu->instantiate("gait", {quiet(), false});
     auto robot = robot_fmu->instantiate("robot", {quiet(), false});
     set_walk_parameters(*gait, gm);
+    gait->expose(gait_in, gait_out);
+    robot->expose(robot_in, robot_out);
     for (auto* c : {gait.get(), robot.get()}) {
       c->setup(time_point{}, time_point{} + k_walk_steps * k_walk_step);
       c->enter_initialization();
       c->exit_initialization();
     }
-    std::array<double, 20> q{};
-    std::array<int, 2> gyro{};
+    value_block q, gyro;  // the gait's angles; the robot's gyro of the previous step
+    q.resize_for(gait_out);
+    gyro.resize_for(robot_out);
     state.ResumeTiming();
     for (int k = 0; k < k_walk_steps; ++k) {
       const time_point t{k * k_walk_step};
-      gait->set_integer(gyro_in, gyro);  // the robot's gyro of the previous step
-      gait->do_step(t, k_walk_step);
-      gait->get_real(angles, q);
-      robot->set_real(targets, q);
-      robot->do_step(t, k_walk_step);
-      robot->get_integer(gyro_out, gyro);
+      gait->step(t, k_walk_step, gyro, q);
+      robot->step(t, k_walk_step, q, gyro);
     }
   }
   state.SetItemsProcessed(state.iterations() * k_walk_steps);

@@ -224,13 +224,14 @@ struct plant_simulator::impl {
     }
     cosim::build_options bo;
     bo.log = log;
-    bo.factory = [this](const cosim::component_spec& spec) {
-      cosim::instance_options io;
-      io.log = log;
-      return fmus.at(spec.name)->instantiate(spec.name, io);
-    };
+    bo.placements.push_back(
+        std::make_shared<cosim::function_placement>([this](const cosim::component_spec& spec) {
+          cosim::instance_options io;
+          io.log = log;
+          return fmus.at(spec.name)->instantiate(spec.name, io);
+        }));
     cosim::built_system built = cosim::build_system(s, bo);
-    cosim::fixed_step_algorithm& algo = built.execution->algorithm();
+    cosim::execution& algo = *built.execution;
     const std::size_t robot = *algo.find_component("robot");
     const auto& md = algo.component_at(robot).model_description();
     std::vector<cosim::observed_variable> observed;
@@ -240,11 +241,11 @@ struct plant_simulator::impl {
       if (!index)
         throw cosim::validation_error("component 'robot' has no output '" + name +
                                       "' (the plant mode needs robot.fmu)");
-      observed.push_back(algo.observe({robot, *index}));
+      observed.push_back(algo.observe(cosim::variable_id{robot, *index}));
     }
     const auto fallen_index = md.index_of("fallen");
     std::optional<cosim::observed_variable> fallen;
-    if (fallen_index) fallen = algo.observe({robot, *fallen_index});
+    if (fallen_index) fallen = algo.observe(cosim::variable_id{robot, *fallen_index});
 
     ++evaluations;
     built.execution->initialize(built.stop);

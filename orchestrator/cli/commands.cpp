@@ -59,6 +59,7 @@ int run(const run_arguments& args) {
   options.progress = !args.quiet;
   options.build.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
   options.build.fmu_debug_logging = args.fmu_debug_log;
+  options.build.threads = args.threads;
   std::optional<fs::path> system_file = args.system;
   if (!args.resume.empty()) {
     // resume the system as it was run (overrides included), unless another one is given
@@ -186,19 +187,18 @@ int validate(const validate_arguments& args) {
     options.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
     const built_system built = build_system(system, options);
     if (!args.quiet) {
-      const auto& algo = built.execution->algorithm();
+      const execution& ex = *built.execution;
       std::string order;
-      for (std::size_t i : algo.order()) {
-        order += (order.empty() ? "" : " -> ") + algo.component_at(i).name();
+      for (std::size_t i : ex.order()) {
+        order += (order.empty() ? "" : " -> ") + ex.component_at(i).name();
       }
       std::printf(
           "%s: OK: system '%s', %zu components, %zu connections (%zu variable pairs), "
           "%s order %s, base step %s s, %s .. %s s\n",
-          args.file.string().c_str(), system.name.c_str(), system.components.size(),
-          system.connections.size(), algo.connections().size(),
-          std::string(to_string(algo.kind())).c_str(), order.c_str(),
-          format_seconds(built.base_step).c_str(), format_seconds(built.start).c_str(),
-          format_seconds(built.stop).c_str());
+          args.file.string().c_str(), system.name.c_str(), ex.component_count(),
+          system.connections.size(), ex.connections().size(), ex.algorithm_name().c_str(),
+          order.c_str(), format_seconds(built.base_step).c_str(),
+          format_seconds(built.start).c_str(), format_seconds(built.stop).c_str());
     }
     return 0;
   }

@@ -18,6 +18,7 @@ struct run_arguments {
   bool fmu_debug_log = false;
   std::filesystem::path resume;  ///< --resume DIR (empty: a new run)
   bool no_plots = false;         ///< skip the figures after a learner run
+  int threads = 1;               ///< --threads
 };
 
 struct validate_arguments {

@@ -8,6 +8,7 @@
 #include "calibrate.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
+#include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/run.hpp"
 
 int main(int argc, char** argv) {
@@ -35,6 +36,12 @@ int main(int argc, char** argv) {
                   "Continue the run in this output folder from its checkpoint (system: the "
                   "folder's system.xml unless SYSTEM.xml is given; ${resume} = the folder)")
       ->check(CLI::ExistingDirectory);
+  run_args.threads = stride::cosim::default_thread_count();
+  run->add_option("--threads", run_args.threads,
+                  "Threads for stepping independent components concurrently (results are "
+                  "identical for any count)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
   run->add_flag("--no-plots", run_args.no_plots,
                 "Do not write figures after a learner run (see `stride plot`)");
 

@@ -4,37 +4,192 @@
 
 namespace stride::cosim {
 
-execution::execution(std::unique_ptr<fixed_step_algorithm> algo, time_point start)
-    : algo_(std::move(algo)), start_(start) {
+execution::execution(std::unique_ptr<stride::cosim::algorithm> algo, time_point start, log_sink log)
+    : algo_(std::move(algo)),
+      log_(log ? std::move(log) : stderr_log_sink()),
+      start_(start),
+      now_(start) {
   if (!algo_) throw validation_error("execution: null algorithm");
 }
 
 execution::~execution() {
-  if (initialized_ && !finished_) finish(current_time(), {});
+  end();
+  // the algorithm refers to the components: it goes first
+  algo_.reset();
+}
+
+std::size_t execution::add_component(std::unique_ptr<component> c, int step_multiple) {
+  if (frozen_) throw validation_error("cannot add a component after freeze()");
+  if (!c) throw validation_error("add_component: null component");
+  if (step_multiple < 1) {
+    throw validation_error("component '" + c->name() + "': step multiple must be >= 1, got " +
+                           std::to_string(step_multiple));
+  }
+  if (find_component(c->name())) {
+    throw validation_error("duplicate component name '" + c->name() + "'");
+  }
+  components_.push_back(std::move(c));
+  multiples_.push_back(step_multiple);
+  starts_.emplace_back();
+  return components_.size() - 1;
+}
+
+void execution::check_variable(variable_id id, const std::string& context) const {
+  if (id.component >= components_.size()) {
+    throw validation_error(context + "unknown component index " + std::to_string(id.component));
+  }
+  if (id.variable >= components_[id.component]->model_description().variables.size()) {
+    throw validation_error(context + "component '" + components_[id.component]->name() +
+                           "' has no variable #" + std::to_string(id.variable));
+  }
+}
+
+void execution::connect(variable_id from, variable_id to, connection_options options) {
+  if (frozen_) throw validation_error("cannot connect after freeze()");
+  const std::string p = options.origin.empty() ? std::string() : options.origin + ": ";
+  check_variable(from, p);
+  check_variable(to, p);
+  connections_.push_back({from, to, std::move(options)});
+}
+
+void execution::set_start_value(variable_id id, scalar_value value, const std::string& origin) {
+  const std::string where = origin.empty() ? std::string() : origin + ": ";
+  if (initialized_) throw validation_error(where + "cannot set start values after initialize()");
+  check_variable(id, where);
+  const auto& v = components_[id.component]->model_description().variables[id.variable];
+  const std::string name = full_name(id);
+  if (v.causality != causality::parameter && v.causality != causality::input) {
+    throw validation_error(where + name + " is " + std::string(to_string(v.causality)) +
+                           "; only parameters and inputs can be given values");
+  }
+  if (v.variability == variability::constant) {
+    throw validation_error(where + name + " is a constant");
+  }
+  start_values& s = starts_[id.component];
+  const auto mismatch = [&] {
+    throw validation_error(where + name + " is " + std::string(to_string(v.type)) + ", the value " +
+                           format_scalar(value) + " has another type");
+  };
+  switch (exchange_type(v.type)) {
+    case variable_type::real:
+      if (const auto* d = std::get_if<double>(&value)) {
+        s.values.reals.push_back(*d);
+      } else if (const auto* i = std::get_if<int>(&value)) {
+        s.values.reals.push_back(*i);
+      } else {
+        mismatch();
+      }
+      break;
+    case variable_type::integer:
+      if (const auto* i = std::get_if<int>(&value)) {
+        s.values.integers.push_back(*i);
+      } else {
+        mismatch();
+      }
+      break;
+    case variable_type::boolean:
+      if (const auto* b = std::get_if<bool>(&value)) {
+        s.values.booleans.push_back(*b);
+      } else {
+        mismatch();
+      }
+      break;
+    case variable_type::string:
+      if (const auto* str = std::get_if<std::string>(&value)) {
+        s.values.strings.push_back(*str);
+      } else {
+        mismatch();
+      }
+      break;
+    case variable_type::enumeration:
+      break;
+  }
+  s.refs.add(v.type, v.reference);
+}
+
+component_declarations execution::declarations() const {
+  component_declarations d;
+  for (const auto& c : components_) {
+    d.names.push_back(c->name());
+    d.descriptions.push_back(&c->model_description());
+  }
+  return d;
+}
+
+void execution::freeze() {
+  if (frozen_) return;
+  if (components_.empty()) throw validation_error("the system has no components");
+  const component_declarations d = declarations();
+  validate_connections(d, connections_, log_);
+  system_wiring w;
+  for (const auto& c : components_) w.components.push_back(c.get());
+  w.step_multiples = multiples_;
+  w.connections = connections_;
+  w.starts = starts_;
+  order_ = algo_->stepping_order(w);
+  algo_->setup(std::move(w), order_);
+  frozen_ = true;
+}
+
+observed_variable execution::observe(variable_id id) {
+  if (initialized_) throw validation_error("cannot observe variables after initialize()");
+  check_variable(id, {});
+  freeze();
+  const auto& v = components_[id.component]->model_description().variables[id.variable];
+  return {id, exchange_type(v.type), algo_->observe(id)};
 }
 
 void execution::add_observer(std::shared_ptr<observer> obs) {
   if (initialized_) throw validation_error("cannot add an observer after initialization");
+  freeze();
   obs->attach(*this);
   observers_.push_back(std::move(obs));
 }
 
-time_point execution::current_time() const noexcept {
-  return initialized_ ? algo_->current_time() : start_;
+std::optional<std::size_t> execution::find_component(std::string_view name) const noexcept {
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    if (components_[i]->name() == name) return i;
+  }
+  return std::nullopt;
+}
+
+std::string execution::full_name(variable_id var) const {
+  const auto& c = *components_.at(var.component);
+  return c.name() + "." + c.model_description().variables.at(var.variable).name;
 }
 
 void execution::initialize(std::optional<time_point> stop) {
   if (initialized_) return;
-  algo_->freeze();
+  freeze();
+  initialized_ = true;
   try {
     algo_->initialize(start_, stop);
   } catch (const std::exception& e) {
-    initialized_ = true;
     finish(start_, e.what());
     throw;
   }
-  initialized_ = true;
   for (auto& o : observers_) o->simulation_initialized(*this, start_);
+}
+
+step_outcome execution::step() {
+  if (finished_) throw validation_error("the simulation has already ended");
+  if (!initialized_) initialize(std::nullopt);
+  const step_outcome outcome = algo_->step(now_);
+  if (outcome.terminated) return outcome;
+  ++steps_;
+  now_ = start_ + steps_ * algo_->base_step();
+  for (auto& o : observers_) o->step_complete(*this, steps_, now_);
+  return outcome;
+}
+
+void execution::terminate_components() noexcept {
+  for (auto& c : components_) {
+    try {
+      c->terminate();
+    } catch (const std::exception& ex) {
+      log_(log_level::warning, "stride", "", ex.what());
+    }
+  }
 }
 
 void execution::finish(time_point t, const std::string& error) noexcept {
@@ -47,11 +202,11 @@ void execution::finish(time_point t, const std::string& error) noexcept {
       // observers must not stop the shutdown of the others
     }
   }
-  algo_->terminate_all();
+  terminate_components();
 }
 
 void execution::end() noexcept {
-  if (initialized_) finish(current_time(), {});
+  if (initialized_) finish(now_, {});
 }
 
 run_result execution::simulate_until(time_point stop) {
@@ -60,22 +215,20 @@ run_result execution::simulate_until(time_point stop) {
   run_result result;
   const duration h = algo_->base_step();
   try {
-    while (algo_->current_time() + h <= stop) {
-      const step_outcome outcome = algo_->step();
+    while (now_ + h <= stop) {
+      const step_outcome outcome = step();
       if (outcome.terminated) {
         result.terminated_by_component = true;
-        result.terminated_by = algo_->component_at(outcome.terminated_by).name();
+        result.terminated_by = components_[outcome.terminated_by]->name();
         break;
       }
-      const time_point t = algo_->current_time();
-      for (auto& o : observers_) o->step_complete(*this, algo_->step_count(), t);
     }
   } catch (const std::exception& e) {
-    finish(algo_->current_time(), e.what());
+    finish(now_, e.what());
     throw;
   }
-  result.end_time = algo_->current_time();
-  result.steps = algo_->step_count();
+  result.end_time = now_;
+  result.steps = steps_;
   if (result.terminated_by_component) finish(result.end_time, {});
   return result;
 }

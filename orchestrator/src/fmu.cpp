@@ -123,9 +123,74 @@ class fmu_component final : public component {
     check("fmi2ExitInitializationMode", fn_.fmi2ExitInitializationMode(instance_));
   }
 
-  step_result do_step(time_point t, duration dt) override {
+  void terminate() override {
+    if (!initialized_ || terminated_ || failed_ || fatal_) return;
+    terminated_ = true;
+    check("fmi2Terminate", fn_.fmi2Terminate(instance_));
+  }
+
+  void set_values(const variable_refs& refs, const value_block& values) override {
+    if (!refs.reals.empty()) {
+      check("fmi2SetReal",
+            fn_.fmi2SetReal(instance_, refs.reals.data(), refs.reals.size(), values.reals.data()));
+    }
+    if (!refs.integers.empty()) {
+      check("fmi2SetInteger", fn_.fmi2SetInteger(instance_, refs.integers.data(),
+                                                 refs.integers.size(), values.integers.data()));
+    }
+    if (!refs.booleans.empty()) {
+      booleans_.resize(refs.booleans.size());
+      for (std::size_t i = 0; i < booleans_.size(); ++i) {
+        booleans_[i] = values.booleans[i] ? fmi2True : fmi2False;
+      }
+      check("fmi2SetBoolean", fn_.fmi2SetBoolean(instance_, refs.booleans.data(),
+                                                 refs.booleans.size(), booleans_.data()));
+    }
+    if (!refs.strings.empty()) {
+      strings_.resize(refs.strings.size());
+      for (std::size_t i = 0; i < strings_.size(); ++i) strings_[i] = values.strings[i].c_str();
+      check("fmi2SetString", fn_.fmi2SetString(instance_, refs.strings.data(), refs.strings.size(),
+                                               strings_.data()));
+    }
+  }
+
+  void get_values(const variable_refs& refs, value_block& values) override {
+    values.resize_for(refs);
+    if (!refs.reals.empty()) {
+      check("fmi2GetReal",
+            fn_.fmi2GetReal(instance_, refs.reals.data(), refs.reals.size(), values.reals.data()));
+    }
+    if (!refs.integers.empty()) {
+      check("fmi2GetInteger", fn_.fmi2GetInteger(instance_, refs.integers.data(),
+                                                 refs.integers.size(), values.integers.data()));
+    }
+    if (!refs.booleans.empty()) {
+      booleans_.resize(refs.booleans.size());
+      check("fmi2GetBoolean", fn_.fmi2GetBoolean(instance_, refs.booleans.data(),
+                                                 refs.booleans.size(), booleans_.data()));
+      for (std::size_t i = 0; i < booleans_.size(); ++i) {
+        values.booleans[i] = booleans_[i] != fmi2False;
+      }
+    }
+    if (!refs.strings.empty()) {
+      strings_.resize(refs.strings.size());
+      check("fmi2GetString", fn_.fmi2GetString(instance_, refs.strings.data(), refs.strings.size(),
+                                               strings_.data()));
+      for (std::size_t i = 0; i < strings_.size(); ++i) {
+        values.strings[i] = strings_[i] ? strings_[i] : "";
+      }
+    }
+  }
+
+  void expose(const variable_refs& inputs, const variable_refs& outputs) override {
+    inputs_ = inputs;
+    outputs_ = outputs;
+  }
+
+  step_result step(time_point t, duration dt, const value_block& inputs,
+                   value_block& outputs) override {
+    set_values(inputs_, inputs);
     const fmi2Status s = fn_.fmi2DoStep(instance_, to_seconds(t), to_seconds(dt), fmi2True);
-    if (s == fmi2OK || s == fmi2Warning) return step_result::complete;
     if (s == fmi2Discard) {
       fmi2Boolean terminated = fmi2False;
       const fmi2Status q = fn_.fmi2GetBooleanStatus(instance_, fmi2Terminated, &terminated);
@@ -137,50 +202,52 @@ class fmu_component final : public component {
                             "': fmi2DoStep returned fmi2Discard without requesting termination "
                             "(fixed-step masters cannot retry a step)");
     }
-    check("fmi2DoStep", s);
+    if (s != fmi2OK && s != fmi2Warning) check("fmi2DoStep", s);
+    get_values(outputs_, outputs);
     return step_result::complete;
   }
 
-  void terminate() override {
-    if (!initialized_ || terminated_ || failed_ || fatal_) return;
-    terminated_ = true;
-    check("fmi2Terminate", fn_.fmi2Terminate(instance_));
+  std::vector<std::byte> save_state() override {
+    require_state_support();
+    fmi2FMUstate state = nullptr;
+    check("fmi2GetFMUstate", fn_.fmi2GetFMUstate(instance_, &state));
+    std::vector<std::byte> bytes;
+    try {
+      size_t size = 0;
+      check("fmi2SerializedFMUstateSize", fn_.fmi2SerializedFMUstateSize(instance_, state, &size));
+      bytes.resize(size);
+      check("fmi2SerializeFMUstate",
+            fn_.fmi2SerializeFMUstate(instance_, state, reinterpret_cast<fmi2Byte*>(bytes.data()),
+                                      size));
+    } catch (...) {
+      fn_.fmi2FreeFMUstate(instance_, &state);
+      throw;
+    }
+    check("fmi2FreeFMUstate", fn_.fmi2FreeFMUstate(instance_, &state));
+    return bytes;
   }
 
-  void get_real(std::span<const value_reference> vr, std::span<double> out) override {
-    check("fmi2GetReal", fn_.fmi2GetReal(instance_, vr.data(), vr.size(), out.data()));
-  }
-  void get_integer(std::span<const value_reference> vr, std::span<int> out) override {
-    check("fmi2GetInteger", fn_.fmi2GetInteger(instance_, vr.data(), vr.size(), out.data()));
-  }
-  void get_boolean(std::span<const value_reference> vr, std::span<bool> out) override {
-    ints_.resize(vr.size());
-    check("fmi2GetBoolean", fn_.fmi2GetBoolean(instance_, vr.data(), vr.size(), ints_.data()));
-    for (std::size_t i = 0; i < vr.size(); ++i) out[i] = ints_[i] != fmi2False;
-  }
-  void get_string(std::span<const value_reference> vr, std::span<std::string> out) override {
-    strings_.resize(vr.size());
-    check("fmi2GetString", fn_.fmi2GetString(instance_, vr.data(), vr.size(), strings_.data()));
-    for (std::size_t i = 0; i < vr.size(); ++i) out[i] = strings_[i] ? strings_[i] : "";
-  }
-  void set_real(std::span<const value_reference> vr, std::span<const double> in) override {
-    check("fmi2SetReal", fn_.fmi2SetReal(instance_, vr.data(), vr.size(), in.data()));
-  }
-  void set_integer(std::span<const value_reference> vr, std::span<const int> in) override {
-    check("fmi2SetInteger", fn_.fmi2SetInteger(instance_, vr.data(), vr.size(), in.data()));
-  }
-  void set_boolean(std::span<const value_reference> vr, std::span<const bool> in) override {
-    ints_.resize(vr.size());
-    for (std::size_t i = 0; i < vr.size(); ++i) ints_[i] = in[i] ? fmi2True : fmi2False;
-    check("fmi2SetBoolean", fn_.fmi2SetBoolean(instance_, vr.data(), vr.size(), ints_.data()));
-  }
-  void set_string(std::span<const value_reference> vr, std::span<const std::string> in) override {
-    strings_.resize(vr.size());
-    for (std::size_t i = 0; i < vr.size(); ++i) strings_[i] = in[i].c_str();
-    check("fmi2SetString", fn_.fmi2SetString(instance_, vr.data(), vr.size(), strings_.data()));
+  void restore_state(std::span<const std::byte> bytes) override {
+    require_state_support();
+    fmi2FMUstate state = nullptr;
+    check("fmi2DeSerializeFMUstate",
+          fn_.fmi2DeSerializeFMUstate(instance_, reinterpret_cast<const fmi2Byte*>(bytes.data()),
+                                      bytes.size(), &state));
+    const fmi2Status set = fn_.fmi2SetFMUstate(instance_, state);
+    fn_.fmi2FreeFMUstate(instance_, &state);
+    check("fmi2SetFMUstate", set);
   }
 
  private:
+  void require_state_support() const {
+    const auto& cs = *fmu_.md.co_simulation;
+    if (!cs.can_get_and_set_fmu_state || !cs.can_serialize_fmu_state) {
+      throw component_error("component '" + name_ + "': " + fmu_.file.string() +
+                            " cannot save its state (canGetAndSetFMUstate and "
+                            "canSerializeFMUstate are not both true)");
+    }
+  }
+
   void check(const char* function, fmi2Status s) {
     if (s == fmi2OK || s == fmi2Warning) return;
     if (s == fmi2Fatal) fatal_ = true;
@@ -228,7 +295,9 @@ class fmu_component final : public component {
   bool terminated_ = false;
   bool failed_ = false;
   bool fatal_ = false;
-  std::vector<fmi2Boolean> ints_;
+  variable_refs inputs_;   // set by every step
+  variable_refs outputs_;  // read after every step
+  std::vector<fmi2Boolean> booleans_;
   std::vector<fmi2String> strings_;
 };
 

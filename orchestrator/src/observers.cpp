@@ -32,8 +32,7 @@ bool glob_match(std::string_view pattern, std::string_view text) noexcept {
   return p == pattern.size();
 }
 
-std::vector<variable_id> find_variables(const fixed_step_algorithm& algo,
-                                        std::string_view pattern) {
+std::vector<variable_id> find_variables(const execution& algo, std::string_view pattern) {
   const bool wildcard = pattern.find_first_of("*?") != std::string_view::npos;
   std::vector<variable_id> found;
   for (std::size_t c = 0; c < algo.component_count(); ++c) {
@@ -79,7 +78,7 @@ csv_recorder::csv_recorder(std::filesystem::path file, std::vector<variable_id> 
     : file_(std::move(file)), variables_(std::move(variables)), interval_(interval) {}
 
 std::shared_ptr<csv_recorder> csv_recorder::from_patterns(std::filesystem::path file,
-                                                          const fixed_step_algorithm& algo,
+                                                          const execution& algo,
                                                           const std::vector<std::string>& patterns,
                                                           std::optional<duration> interval) {
   std::vector<variable_id> vars;
@@ -99,7 +98,7 @@ csv_recorder::~csv_recorder() {
 }
 
 void csv_recorder::attach(execution& ex) {
-  auto& algo = ex.algorithm();
+  auto& algo = ex;
   if (interval_) {
     if (*interval_ <= duration::zero() || *interval_ % algo.base_step() != duration::zero()) {
       throw validation_error("recording interval " + format_seconds(*interval_) +
@@ -134,7 +133,7 @@ void csv_recorder::attach(execution& ex) {
 void csv_recorder::write_row(const execution& ex, time_point t) {
   if (t == last_row_ || out_ == nullptr) return;
   last_row_ = t;
-  const auto& algo = ex.algorithm();
+  const auto& algo = ex;
   buffer_ += format_seconds(t);
   for (const auto& o : observed_) {
     buffer_ += ',';
@@ -232,7 +231,7 @@ std::string progress_display::format(time_point t, double wall, const std::strin
 }
 
 void progress_display::attach(execution& ex) {
-  auto& algo = ex.algorithm();
+  auto& algo = ex;
   for (const variable_id& id : find_variables(algo, "*.progress")) {
     const auto& v = algo.component_at(id.component).model_description().variables[id.variable];
     if (v.causality != causality::output || v.type != variable_type::real) continue;
@@ -244,7 +243,7 @@ void progress_display::attach(execution& ex) {
 
 std::string progress_display::line(const execution& ex, time_point t, double wall) const {
   if (!progress_var_) return format(t, wall);
-  return format(t, wall, progress_name_, ex.algorithm().real_value(*progress_var_));
+  return format(t, wall, progress_name_, ex.real_value(*progress_var_));
 }
 
 void progress_display::simulation_initialized(const execution& ex, time_point t) {

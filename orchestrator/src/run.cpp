@@ -190,6 +190,10 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
 run_report run_system(system_structure system, const run_options& options) {
   for (const auto& o : options.overrides) apply_override(system, o);
   if (options.stop) system.stop = *options.stop;
+  // the copies of replica groups get their own names and ${copy} values before the run's
+  // placeholders are substituted; system.xml keeps the groups
+  const system_structure as_written = system;
+  system = expand_replicas(system);
 
   run_report report;
   const bool resuming = !options.resume_dir.empty();
@@ -202,8 +206,7 @@ run_report run_system(system_structure system, const run_options& options) {
     report.output_dir =
         options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
   }
-  // the system as written to system.xml keeps its placeholders, so it can be run (resumed) again
-  const system_structure as_written = system;
+  // system.xml keeps the placeholders (as_written above), so it can be run (resumed) again
   const std::size_t resume_uses =
       substitute_placeholders(system, fs::absolute(report.output_dir),
                               resuming ? fs::absolute(options.resume_dir) : fs::path());
@@ -235,7 +238,7 @@ run_report run_system(system_structure system, const run_options& options) {
     std::vector<variable_id> vars;
     for (std::size_t i = 0; i < system.record.signals.size(); ++i) {
       const auto& pattern = system.record.signals[i];
-      const auto found = find_variables(ex.algorithm(), pattern);
+      const auto found = find_variables(ex, pattern);
       if (found.empty()) {
         const std::string where = i < system.record.signal_locations.size()
                                       ? system.record.signal_locations[i].str()
@@ -272,7 +275,7 @@ run_report run_system(system_structure system, const run_options& options) {
   } catch (const std::exception& e) {
     report.error = e.what();
     report.result.end_time = ex.current_time();
-    report.result.steps = ex.algorithm().step_count();
+    report.result.steps = ex.step_count();
     finish_report();
     write_file(report.manifest_file, manifest_json(m));
     throw;

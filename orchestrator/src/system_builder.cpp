@@ -15,10 +15,6 @@ namespace stride::cosim {
 
 namespace fs = std::filesystem;
 
-bool is_bundled_fmu_name(std::string_view fmu) noexcept {
-  return !fmu.empty() && fmu.find('/') == std::string_view::npos && !fmu.ends_with(".fmu");
-}
-
 std::vector<fs::path> default_fmu_search_path() {
   std::vector<fs::path> paths;
   if (const char* env = std::getenv("STRIDE_FMU_PATH")) {
@@ -125,52 +121,108 @@ std::string prefix(const source_location& where) {
   return s.empty() ? s : s + ": ";
 }
 
-// "comp.var" → component index and the variable part
-std::pair<std::size_t, std::string> split_name(const fixed_step_algorithm& algo,
-                                               const std::string& full,
-                                               const std::string& context) {
+// the components a connection side names: "comp", or the copies "comp[*]" / "comp[2:3]"
+std::vector<std::size_t> expand_components(const execution& ex, const std::string& comp,
+                                           const std::string& context) {
+  if (const auto index = ex.find_component(comp)) return {*index};
+  const auto open = comp.rfind('[');
+  if (open != std::string::npos && comp.ends_with("]")) {
+    const std::string base = comp.substr(0, open);
+    const std::string inside = comp.substr(open + 1, comp.size() - open - 2);
+    std::vector<std::pair<long, std::size_t>> found;
+    for (std::size_t c = 0; c < ex.component_count(); ++c) {
+      const std::string& name = ex.component_at(c).name();
+      if (!name.starts_with(base + "[") || !name.ends_with("]")) continue;
+      found.emplace_back(std::stol(name.substr(base.size() + 1)), c);
+    }
+    std::sort(found.begin(), found.end());
+    std::vector<std::size_t> result;
+    if (inside == "*") {
+      for (const auto& f : found) result.push_back(f.second);
+    } else if (const auto colon = inside.find(':'); colon != std::string::npos) {
+      long first = 0, last = 0;
+      const auto parse = [](std::string_view t, long& v) {
+        auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+        return ec == std::errc() && end == t.data() + t.size();
+      };
+      if (!parse(std::string_view(inside).substr(0, colon), first) ||
+          !parse(std::string_view(inside).substr(colon + 1), last) || first > last) {
+        throw validation_error(context + "malformed copy range '" + comp +
+                               "' (expected [first:last], first <= last)");
+      }
+      for (const auto& f : found) {
+        if (f.first >= first && f.first <= last) result.push_back(f.second);
+      }
+      if (result.size() != static_cast<std::size_t>(last - first + 1)) {
+        throw validation_error(context + "'" + comp + "': only " + std::to_string(found.size()) +
+                               " copies of '" + base + "' exist");
+      }
+    }
+    if (!result.empty()) return result;
+    if (inside == "*") {
+      throw validation_error(context + "no copies '" + base + "[<k>]' for '" + comp + "'");
+    }
+    if (!found.empty()) {
+      throw validation_error(context + "unknown component '" + comp + "' (the copies are " + base +
+                             "[1].." + base + "[" + std::to_string(found.size()) + "])");
+    }
+  }
+  throw validation_error(context + "unknown component '" + comp + "'");
+}
+
+// one side of a connection, "comp.var" with groups on either part → variables in pairing order
+std::vector<variable_id> expand_side(const execution& ex, const std::string& full,
+                                     const std::string& context) {
   const auto dot = full.find('.');
   if (dot == std::string::npos || dot == 0 || dot + 1 == full.size()) {
     throw validation_error(context + "'" + full + "' is not of the form component.variable");
   }
-  const std::string comp = full.substr(0, dot);
-  const auto index = algo.find_component(comp);
-  if (!index) throw validation_error(context + "unknown component '" + comp + "'");
-  return {*index, full.substr(dot + 1)};
+  std::vector<variable_id> result;
+  for (std::size_t c : expand_components(ex, full.substr(0, dot), context)) {
+    const auto& comp = ex.component_at(c);
+    for (std::size_t v : expand_variable_group(comp.model_description(), full.substr(dot + 1),
+                                               context + comp.name() + ": ")) {
+      result.push_back({c, v});
+    }
+  }
+  return result;
 }
 
 }  // namespace
 
-built_system build_system(const system_structure& system, const build_options& options) {
+built_system build_system(const system_structure& structure, const build_options& options) {
+  const system_structure system = expand_replicas(structure);
   const log_sink log = options.log ? options.log : stderr_log_sink();
   built_system built;
   built.start = system.start;
 
-  // components: each FMU file is imported once, however many instances use it
-  std::map<fs::path, std::shared_ptr<fmu>> imported;
+  // components, each created where its spec places it
+  placement_context context{&system, options.fmu_search_path, options.import, log,
+                            options.fmu_debug_logging};
+  in_process_placement in_process;
   std::vector<std::unique_ptr<component>> components;
   for (const auto& spec : system.components) {
     component_info info;
     info.name = spec.name;
     info.step_multiple = spec.step_multiple;
+    info.worker = spec.worker;
     std::unique_ptr<component> c;
-    if (options.factory) {
-      c = options.factory(spec);
-      if (!c) throw validation_error(prefix(spec.where) + "no component for '" + spec.name + "'");
-    } else {
-      const fs::path file = resolve_fmu(spec, system, options.fmu_search_path);
-      const fs::path key = fs::weakly_canonical(file);
-      auto& f = imported[key];
-      try {
-        if (!f) f = fmu::load(file, options.import);
-        instance_options io;
-        io.log = log;
-        io.logging_on = options.fmu_debug_logging;
-        c = f->instantiate(spec.name, io);
-      } catch (const error& e) {
-        throw fmu_import_error(prefix(spec.where) + "component '" + spec.name + "': " + e.what());
+    for (const auto& resolver : options.placements) {
+      c = resolver->create(spec, context);
+      if (c) {
+        info.fmu = resolver->source_of(spec);
+        break;
       }
-      info.fmu = fs::absolute(file);
+    }
+    if (!c) {
+      c = in_process.create(spec, context);
+      info.fmu = in_process.source_of(spec);
+    }
+    if (!c) {
+      throw validation_error(prefix(spec.where) + "component '" + spec.name + "': worker \"" +
+                             spec.worker +
+                             "\" placement needs a resolver for worker processes, which this "
+                             "build does not have");
     }
     const auto& md = c->model_description();
     info.guid = md.guid;
@@ -200,11 +252,13 @@ built_system build_system(const system_structure& system, const build_options& o
   }
   built.base_step = step;
 
-  auto algo = std::make_unique<fixed_step_algorithm>(step, system.algorithm, log);
+  auto ex = std::make_unique<execution>(
+      std::make_unique<fixed_step_algorithm>(step, system.algorithm, options.threads), system.start,
+      log);
   for (std::size_t i = 0; i < components.size(); ++i) {
     const auto& spec = system.components[i];
     try {
-      algo->add_component(std::move(components[i]), spec.step_multiple);
+      ex->add_component(std::move(components[i]), spec.step_multiple);
     } catch (const validation_error& e) {
       throw validation_error(prefix(spec.where) + e.what());
     }
@@ -213,7 +267,7 @@ built_system build_system(const system_structure& system, const build_options& o
   // parameters and start values
   for (std::size_t i = 0; i < system.components.size(); ++i) {
     const auto& spec = system.components[i];
-    const auto& md = algo->component_at(i).model_description();
+    const auto& md = ex->component_at(i).model_description();
     for (const auto& p : spec.parameters) {
       const std::string where = prefix(p.where);
       const auto index = md.index_of(p.variable);
@@ -227,33 +281,25 @@ built_system build_system(const system_structure& system, const build_options& o
       } catch (const std::invalid_argument& e) {
         throw validation_error(where + spec.name + "." + p.variable + ": " + e.what());
       }
-      algo->set_start_value({i, *index}, std::move(value), p.where.str());
+      ex->set_start_value({i, *index}, std::move(value), p.where.str());
     }
   }
 
-  // connections, groups expanded and paired in index order
+  // connections, groups expanded and paired in order
   for (const auto& c : system.connections) {
-    const std::string where = prefix(c.where);
-    const std::string context = where + "connection " + c.from + " -> " + c.to + ": ";
-    const auto [from_comp, from_var] = split_name(*algo, c.from, context);
-    const auto [to_comp, to_var] = split_name(*algo, c.to, context);
-    const auto sources =
-        expand_variable_group(algo->component_at(from_comp).model_description(), from_var,
-                              context + algo->component_at(from_comp).name() + ": ");
-    const auto targets =
-        expand_variable_group(algo->component_at(to_comp).model_description(), to_var,
-                              context + algo->component_at(to_comp).name() + ": ");
+    const std::string context = prefix(c.where) + "connection " + c.from + " -> " + c.to + ": ";
+    const auto sources = expand_side(*ex, c.from, context);
+    const auto targets = expand_side(*ex, c.to, context);
     if (sources.size() != targets.size()) {
       throw validation_error(context + "the source group has " + std::to_string(sources.size()) +
                              " variables, the target group " + std::to_string(targets.size()));
     }
     for (std::size_t k = 0; k < sources.size(); ++k) {
-      algo->connect({from_comp, sources[k]}, {to_comp, targets[k]},
-                    connection_options{c.delayed, c.where.str()});
+      ex->connect(sources[k], targets[k], connection_options{c.delayed, c.where.str()});
     }
   }
 
-  algo->freeze();
+  ex->freeze();
 
   // run time
   if (!system.stop) {
@@ -270,7 +316,7 @@ built_system build_system(const system_structure& system, const build_options& o
         " s is not a whole number of base steps of " + format_seconds(step) + " s");
   }
   built.stop = *system.stop;
-  built.execution = std::make_unique<execution>(std::move(algo), system.start);
+  built.execution = std::move(ex);
   return built;
 }
 

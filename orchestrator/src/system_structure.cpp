@@ -19,6 +19,10 @@ std::string source_location::str() const {
   return line > 0 ? file + ":" + std::to_string(line) : file;
 }
 
+bool is_bundled_fmu_name(std::string_view fmu) noexcept {
+  return !fmu.empty() && fmu.find('/') == std::string_view::npos && !fmu.ends_with(".fmu");
+}
+
 component_spec& system_structure::add_component(std::string component_name, std::string fmu_ref,
                                                 int step_multiple) {
   component_spec c;
@@ -52,18 +56,32 @@ void system_structure::set(const std::string& full_name, std::string value, sour
   }
   const std::string comp = full_name.substr(0, dot);
   const std::string var = full_name.substr(dot + 1);
-  component_spec* c = find_component(comp);
-  if (c == nullptr) {
-    throw validation_error("'" + full_name + "': the system has no component '" + comp + "'");
-  }
-  for (auto& p : c->parameters) {
-    if (p.variable == var) {
-      p.value = std::move(value);
-      p.where = std::move(at);
-      return;
+  std::vector<component_spec*> targets;
+  if (component_spec* c = find_component(comp)) targets.push_back(c);
+  for (auto& g : groups) {
+    for (auto& m : g.components) {
+      if (m.name == comp) targets.push_back(&m);  // the member of every copy
+      if (comp.starts_with(m.name + "[")) {
+        throw validation_error("'" + full_name + "': a parameter of one copy of group '" + g.name +
+                               "' cannot be set; '" + m.name + "." + var +
+                               "' sets it in every copy");
+      }
     }
   }
-  c->parameters.push_back({var, std::move(value), std::move(at)});
+  if (targets.empty()) {
+    throw validation_error("'" + full_name + "': the system has no component '" + comp + "'");
+  }
+  for (component_spec* c : targets) {
+    bool replaced = false;
+    for (auto& p : c->parameters) {
+      if (p.variable == var) {
+        p.value = value;
+        p.where = at;
+        replaced = true;
+      }
+    }
+    if (!replaced) c->parameters.push_back({var, value, at});
+  }
 }
 
 void apply_override(system_structure& system, const std::string& assignment) {
@@ -158,25 +176,24 @@ class system_reader {
         seen_simulation = true;
         read_simulation(e, s);
       } else if (tag == "component") {
-        read_component(e, s);
+        read_component(e, s.components);
       } else if (tag == "connection") {
-        check_attributes(e, {"from", "to", "delay"});
-        connection_spec c;
-        c.from = required(e, "from");
-        c.to = required(e, "to");
-        c.delayed = boolean(e, "delay", false);
-        c.where = at(e);
-        s.connections.push_back(std::move(c));
+        s.connections.push_back(read_connection(e));
+      } else if (tag == "replicate") {
+        read_group(e, s);
       } else if (tag == "record") {
         if (seen_record) fail(e->GetLineNum(), "more than one <record>");
         seen_record = true;
         read_record(e, s.record);
       } else {
         fail(e->GetLineNum(), "unknown element <" + std::string(tag) +
-                                  "> (expected simulation, component, connection or record)");
+                                  "> (expected simulation, component, connection, replicate or "
+                                  "record)");
       }
     }
-    if (s.components.empty()) fail(root->GetLineNum(), "the system has no <component>");
+    if (s.components.empty() && s.groups.empty()) {
+      fail(root->GetLineNum(), "the system has no <component>");
+    }
     return s;
   }
 
@@ -199,31 +216,71 @@ class system_reader {
     }
   }
 
-  void read_component(const tinyxml2::XMLElement* e, system_structure& s) const {
-    check_attributes(e, {"name", "fmu", "step_multiple"});
+  connection_spec read_connection(const tinyxml2::XMLElement* e) const {
+    check_attributes(e, {"from", "to", "delay"});
+    connection_spec c;
+    c.from = required(e, "from");
+    c.to = required(e, "to");
+    c.delayed = boolean(e, "delay", false);
+    c.where = at(e);
+    return c;
+  }
+
+  int positive_integer(const tinyxml2::XMLElement* e, const char* name) const {
+    const std::string text = required(e, name);
+    int value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || value < 1) {
+      fail(e->GetLineNum(), std::string(name) + "=\"" + text + "\" is not a positive integer");
+    }
+    return value;
+  }
+
+  void read_group(const tinyxml2::XMLElement* e, system_structure& s) const {
+    check_attributes(e, {"name", "count"});
+    replica_group g;
+    g.name = required(e, "name");
+    g.count = positive_integer(e, "count");
+    g.where = at(e);
+    for (const auto& other : s.groups) {
+      if (other.name == g.name) {
+        fail(e->GetLineNum(),
+             "duplicate group name \"" + g.name + "\" (first at " + other.where.str() + ")");
+      }
+    }
+    for (auto* c = e->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
+      const std::string_view tag = c->Name();
+      if (tag == "component") {
+        read_component(c, g.components);
+      } else if (tag == "connection") {
+        g.connections.push_back(read_connection(c));
+      } else {
+        fail(c->GetLineNum(), "unknown element <" + std::string(tag) +
+                                  "> in <replicate> (expected component or connection)");
+      }
+    }
+    if (g.components.empty()) fail(e->GetLineNum(), "<replicate> has no <component>");
+    s.groups.push_back(std::move(g));
+  }
+
+  void read_component(const tinyxml2::XMLElement* e,
+                      std::vector<component_spec>& components) const {
+    check_attributes(e, {"name", "fmu", "step_multiple", "worker"});
     component_spec c;
     c.name = required(e, "name");
     if (c.name.find_first_of(". \t*?[]") != std::string::npos) {
       fail(e->GetLineNum(),
            "component name \"" + c.name + "\" must not contain '.', blanks, '*', '?' or brackets");
     }
-    for (const auto& other : s.components) {
+    for (const auto& other : components) {
       if (other.name == c.name) {
         fail(e->GetLineNum(),
              "duplicate component name \"" + c.name + "\" (first at " + other.where.str() + ")");
       }
     }
     c.fmu = required(e, "fmu");
-    if (const char* m = e->Attribute("step_multiple")) {
-      const std::string_view text(m);
-      int value = 0;
-      auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-      if (ec != std::errc() || end != text.data() + text.size() || value < 1) {
-        fail(e->GetLineNum(),
-             "step_multiple=\"" + std::string(text) + "\" is not a positive integer");
-      }
-      c.step_multiple = value;
-    }
+    if (e->Attribute("step_multiple")) c.step_multiple = positive_integer(e, "step_multiple");
+    if (e->Attribute("worker")) c.worker = required(e, "worker");
     c.where = at(e);
     for (auto* p = e->FirstChildElement(); p != nullptr; p = p->NextSiblingElement()) {
       if (std::string_view(p->Name()) != "parameter") {
@@ -245,7 +302,7 @@ class system_reader {
       }
       c.parameters.push_back(std::move(setting));
     }
-    s.components.push_back(std::move(c));
+    components.push_back(std::move(c));
   }
 
   void read_record(const tinyxml2::XMLElement* e, record_spec& r) const {
@@ -304,29 +361,37 @@ std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
   if (s.stop) sim->SetAttribute("stop", format_seconds(*s.stop).c_str());
   if (s.base_step) sim->SetAttribute("step", format_seconds(*s.base_step).c_str());
   sim->SetAttribute("algorithm", std::string(to_string(s.algorithm)).c_str());
-  for (const auto& c : s.components) {
-    auto* e = root->InsertNewChildElement("component");
+  const auto write_component = [&](tinyxml2::XMLElement* parent, const component_spec& c) {
+    auto* e = parent->InsertNewChildElement("component");
     e->SetAttribute("name", c.name.c_str());
     std::string fmu_ref = c.fmu;
-    const bool bundled = fmu_ref.find('/') == std::string::npos &&
-                         !(fmu_ref.size() > 4 && fmu_ref.ends_with(".fmu"));
-    if (absolute_fmu_paths && !bundled && fs::path(fmu_ref).is_relative()) {
+    if (absolute_fmu_paths && !is_bundled_fmu_name(fmu_ref) && fs::path(fmu_ref).is_relative()) {
       fmu_ref = fs::absolute(s.base_dir / fmu_ref).lexically_normal().string();
     }
     e->SetAttribute("fmu", fmu_ref.c_str());
     if (c.step_multiple != 1) e->SetAttribute("step_multiple", c.step_multiple);
+    if (!c.worker.empty()) e->SetAttribute("worker", c.worker.c_str());
     for (const auto& p : c.parameters) {
       auto* pe = e->InsertNewChildElement("parameter");
       pe->SetAttribute("name", p.variable.c_str());
       pe->SetAttribute("value", p.value.c_str());
     }
-  }
-  for (const auto& c : s.connections) {
-    auto* e = root->InsertNewChildElement("connection");
+  };
+  const auto write_connection = [](tinyxml2::XMLElement* parent, const connection_spec& c) {
+    auto* e = parent->InsertNewChildElement("connection");
     e->SetAttribute("from", c.from.c_str());
     e->SetAttribute("to", c.to.c_str());
     if (c.delayed) e->SetAttribute("delay", "true");
+  };
+  for (const auto& c : s.components) write_component(root, c);
+  for (const auto& g : s.groups) {
+    auto* e = root->InsertNewChildElement("replicate");
+    e->SetAttribute("name", g.name.c_str());
+    e->SetAttribute("count", g.count);
+    for (const auto& c : g.components) write_component(e, c);
+    for (const auto& c : g.connections) write_connection(e, c);
   }
+  for (const auto& c : s.connections) write_connection(root, c);
   auto* rec = root->InsertNewChildElement("record");
   if (!s.record.enabled) rec->SetAttribute("enabled", "false");
   if (s.record.interval) rec->SetAttribute("interval", format_seconds(*s.record.interval).c_str());

@@ -41,7 +41,7 @@ double settled_pitch_with(const fs::path& config, double seconds) {
   bo.fmu_search_path = {STRIDE_FMU_DIR};
   bo.log = cosim::stderr_log_sink(cosim::log_level::warning);
   cosim::built_system built = cosim::build_system(s, bo);
-  auto& algo = built.execution->algorithm();
+  auto& algo = *built.execution;
   const std::size_t robot = *algo.find_component("robot");
   const auto pitch =
       algo.observe({robot, *algo.component_at(robot).model_description().index_of("pitch")});

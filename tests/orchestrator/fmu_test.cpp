@@ -3,6 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <dlfcn.h>
+
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -13,6 +16,7 @@
 #include "stride/cosim/observers.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_builder.hpp"
+#include "stride/fmi2/fmi2_api.h"
 #include "zip_writer.hpp"
 
 namespace stride::cosim {
@@ -115,19 +119,115 @@ TEST_F(cosim_fmu_test, imports_and_runs_one_instance_directly) {
   c->enter_initialization();
   const value_reference u_vr = md.variables[u].reference;
   const value_reference y_vr = md.variables[y].reference;
-  const double three = 3.0;
-  c->set_real({&u_vr, 1}, {&three, 1});
-  double out = 0;
-  c->get_real({&y_vr, 1}, {&out, 1});
-  EXPECT_EQ(out, 6.0);  // gain 2 * u 3
+  variable_refs u_refs, y_refs;
+  u_refs.reals = {u_vr};
+  y_refs.reals = {y_vr};
+  value_block three, out;
+  three.reals = {3.0};
+  c->set_values(u_refs, three);
+  c->get_values(y_refs, out);
+  EXPECT_EQ(out.reals, std::vector<double>{6.0});  // gain 2 * u 3
   c->exit_initialization();
-  EXPECT_EQ(c->do_step(time_point{}, duration(10'000'000)), step_result::complete);
+  c->expose(u_refs, y_refs);
+  three.reals = {4.0};
+  EXPECT_EQ(c->step(time_point{}, duration(10'000'000), three, out), step_result::complete);
+  EXPECT_EQ(out.reals, std::vector<double>{8.0});  // the output after the step, with u = 4
   c->terminate();
   const fs::path extracted = f->extracted_dir();
   EXPECT_TRUE(fs::exists(extracted));
   c.reset();
   f.reset();
   EXPECT_FALSE(fs::exists(extracted));  // RAII cleanup
+}
+
+void ignore_fmu_log(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String, fmi2String, ...) {
+}
+
+// The same inputs given to two instances: to one as batches through the component interface,
+// to the other one variable at a time through the typed fmi2Set*/fmi2Get* of the binary.
+TEST_F(cosim_fmu_test, a_batched_exchange_equals_individual_typed_calls) {
+  auto f = fmu::load(k_fmu);
+  const auto& md = f->model_description();
+  const auto ref = [&](const char* name) { return md.find(name)->reference; };
+  variable_refs in, out;
+  in.reals = {ref("u"), ref("vec_in[1]"), ref("vec_in[2]"), ref("vec_in[3]")};
+  in.integers = {ref("n")};
+  in.booleans = {ref("enable")};
+  in.strings = {ref("suffix")};
+  out.reals = {ref("y"), ref("integral"), ref("vec_out[1]"), ref("vec_out[3]")};
+  out.integers = {ref("counter")};
+  out.booleans = {ref("active")};
+  out.strings = {ref("echo")};
+  const auto inputs_at = [](int k) {
+    value_block v;
+    v.reals = {0.5 * k, -1.0 * k, 2.0, k * k * 0.25};
+    v.integers = {k};
+    v.booleans = {k % 2 == 1};
+    v.strings = {"s" + std::to_string(k)};
+    return v;
+  };
+
+  // batched: one step call per communication step
+  auto batched = f->instantiate("batched", {log.sink(), false});
+  batched->setup(time_point{}, std::nullopt);
+  batched->expose(in, out);
+  batched->enter_initialization();
+  batched->exit_initialization();
+  std::vector<value_block> batched_outputs;
+  for (int k = 0; k < 5; ++k) {
+    value_block o;
+    o.resize_for(out);
+    ASSERT_EQ(batched->step(time_point{} + k * duration(10'000'000), duration(10'000'000),
+                            inputs_at(k), o),
+              step_result::complete);
+    batched_outputs.push_back(o);
+  }
+
+  // individual: the raw FMI functions of the same binary, one value reference per call
+  void* lib = dlopen((f->extracted_dir() / "binaries/linux64/stride_test.so").c_str(),
+                     RTLD_NOW | RTLD_LOCAL);
+  ASSERT_NE(lib, nullptr);
+#define STRIDE_GET(name) \
+  [[maybe_unused]] auto* name = reinterpret_cast<name##TYPE*>(dlsym(lib, #name));
+  STRIDE_FMI2_CS_FUNCTIONS(STRIDE_GET)
+#undef STRIDE_GET
+  fmi2CallbackFunctions cb{ignore_fmu_log, calloc, free, nullptr, nullptr};
+  fmi2Component c = fmi2Instantiate("typed", fmi2CoSimulation, md.guid.c_str(),
+                                    f->resource_uri().c_str(), &cb, fmi2False, fmi2False);
+  ASSERT_NE(c, nullptr);
+  ASSERT_EQ(fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0), fmi2OK);
+  ASSERT_EQ(fmi2EnterInitializationMode(c), fmi2OK);
+  ASSERT_EQ(fmi2ExitInitializationMode(c), fmi2OK);
+  for (int k = 0; k < 5; ++k) {
+    const value_block v = inputs_at(k);
+    for (std::size_t i = 0; i < in.reals.size(); ++i) fmi2SetReal(c, &in.reals[i], 1, &v.reals[i]);
+    fmi2SetInteger(c, &in.integers[0], 1, &v.integers[0]);
+    const fmi2Boolean b = v.booleans[0] ? fmi2True : fmi2False;
+    fmi2SetBoolean(c, &in.booleans[0], 1, &b);
+    const fmi2String str = v.strings[0].c_str();
+    fmi2SetString(c, &in.strings[0], 1, &str);
+    ASSERT_EQ(fmi2DoStep(c, 0.01 * k, 0.01, fmi2True), fmi2OK);
+    const value_block& o = batched_outputs[static_cast<std::size_t>(k)];
+    for (std::size_t i = 0; i < out.reals.size(); ++i) {
+      double x = 0;
+      fmi2GetReal(c, &out.reals[i], 1, &x);
+      EXPECT_EQ(x, o.reals[i]) << "step " << k << ", real " << i;
+    }
+    int n = 0;
+    fmi2GetInteger(c, &out.integers[0], 1, &n);
+    EXPECT_EQ(n, o.integers[0]);
+    fmi2Boolean active = fmi2False;
+    fmi2GetBoolean(c, &out.booleans[0], 1, &active);
+    EXPECT_EQ(active != fmi2False, o.booleans[0]);
+    fmi2String echo = nullptr;
+    fmi2GetString(c, &out.strings[0], 1, &echo);
+    EXPECT_EQ(std::string(echo), o.strings[0]);
+  }
+  EXPECT_EQ(batched_outputs[4].strings[0], "strides4");  // label + the last step's suffix
+  EXPECT_EQ(batched_outputs[4].integers[0], 15);         // Σ (1 + n) over five steps
+  fmi2Terminate(c);
+  fmi2FreeInstance(c);
+  dlclose(lib);
 }
 
 TEST_F(cosim_fmu_test, every_value_type_crosses_connections) {

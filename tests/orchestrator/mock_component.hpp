@@ -92,47 +92,81 @@ class mock_component : public component {
     note("exit_initialization");
     update();
   }
-  step_result do_step(time_point t, duration dt) override {
-    note("do_step@" + std::to_string(t.time_since_epoch().count()));
-    step_times.push_back(t);
-    step_sizes.push_back(dt);
-    step_result r = on_step ? on_step(*this, t, dt) : step_result::complete;
-    if (r == step_result::complete) update();
-    return r;
-  }
   void terminate() override {
     terminated = true;
     note("terminate");
   }
 
-  void get_real(std::span<const value_reference> vr, std::span<double> out) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) out[k] = reals_[vr[k]];
+  void set_values(const variable_refs& refs, const value_block& values) override {
+    ++set_calls;
+    for (std::size_t k = 0; k < refs.reals.size(); ++k) reals_[refs.reals[k]] = values.reals[k];
+    for (std::size_t k = 0; k < refs.integers.size(); ++k) {
+      ints_[refs.integers[k]] = values.integers[k];
+    }
+    for (std::size_t k = 0; k < refs.booleans.size(); ++k) {
+      bools_[refs.booleans[k]] = values.booleans[k];
+    }
+    for (std::size_t k = 0; k < refs.strings.size(); ++k) {
+      strings_[refs.strings[k]] = values.strings[k];
+    }
+    if (!refs.empty()) update();
   }
-  void get_integer(std::span<const value_reference> vr, std::span<int> out) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) out[k] = ints_[vr[k]];
+  void get_values(const variable_refs& refs, value_block& values) override {
+    ++get_calls;
+    values.resize_for(refs);
+    for (std::size_t k = 0; k < refs.reals.size(); ++k) values.reals[k] = reals_[refs.reals[k]];
+    for (std::size_t k = 0; k < refs.integers.size(); ++k) {
+      values.integers[k] = ints_[refs.integers[k]];
+    }
+    for (std::size_t k = 0; k < refs.booleans.size(); ++k) {
+      values.booleans[k] = bools_[refs.booleans[k]];
+    }
+    for (std::size_t k = 0; k < refs.strings.size(); ++k) {
+      values.strings[k] = strings_[refs.strings[k]];
+    }
   }
-  void get_boolean(std::span<const value_reference> vr, std::span<bool> out) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) out[k] = bools_[vr[k]];
+  void expose(const variable_refs& inputs, const variable_refs& outputs) override {
+    exposed_inputs = inputs;
+    exposed_outputs = outputs;
   }
-  void get_string(std::span<const value_reference> vr, std::span<std::string> out) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) out[k] = strings_[vr[k]];
-  }
-  void set_real(std::span<const value_reference> vr, std::span<const double> in) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) reals_[vr[k]] = in[k];
+  step_result step(time_point t, duration dt, const value_block& inputs,
+                   value_block& outputs) override {
+    ++step_calls;
+    // the inputs of the step, as set_values would store them (without the extra update)
+    for (std::size_t k = 0; k < inputs.reals.size(); ++k) {
+      reals_[exposed_inputs.reals[k]] = inputs.reals[k];
+    }
+    for (std::size_t k = 0; k < inputs.integers.size(); ++k) {
+      ints_[exposed_inputs.integers[k]] = inputs.integers[k];
+    }
+    for (std::size_t k = 0; k < inputs.booleans.size(); ++k) {
+      bools_[exposed_inputs.booleans[k]] = inputs.booleans[k];
+    }
+    for (std::size_t k = 0; k < inputs.strings.size(); ++k) {
+      strings_[exposed_inputs.strings[k]] = inputs.strings[k];
+    }
+    note("do_step@" + std::to_string(t.time_since_epoch().count()));
+    step_times.push_back(t);
+    step_sizes.push_back(dt);
+    step_result r = on_step ? on_step(*this, t, dt) : step_result::complete;
+    if (r != step_result::complete) return r;
     update();
+    --get_calls;  // the outputs travel with the step, not as a get
+    get_values(exposed_outputs, outputs);
+    return r;
   }
-  void set_integer(std::span<const value_reference> vr, std::span<const int> in) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) ints_[vr[k]] = in[k];
-    update();
+  std::vector<std::byte> save_state() override {
+    throw std::logic_error("mock " + name_ + " has no state");
   }
-  void set_boolean(std::span<const value_reference> vr, std::span<const bool> in) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) bools_[vr[k]] = in[k];
-    update();
+  void restore_state(std::span<const std::byte>) override {
+    throw std::logic_error("mock " + name_ + " has no state");
   }
-  void set_string(std::span<const value_reference> vr, std::span<const std::string> in) override {
-    for (std::size_t k = 0; k < vr.size(); ++k) strings_[vr[k]] = in[k];
-    update();
-  }
+
+  variable_refs exposed_inputs;
+  variable_refs exposed_outputs;
+  int step_calls = 0;
+  int set_calls = 0;  ///< set_values calls outside steps
+  int get_calls = 0;  ///< get_values calls outside steps
 
  private:
   value_reference ref(const std::string& var) const {

@@ -50,7 +50,7 @@ std::unique_ptr<component> make_mock(const component_spec& spec) {
 
 build_options mock_options() {
   build_options o;
-  o.factory = make_mock;
+  o.placements.push_back(std::make_shared<function_placement>(make_mock));
   o.log = quiet_log();
   return o;
 }
@@ -134,8 +134,8 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m' colour='red'/>\n</system>"),
             "t/test.xml:2: unknown attribute 'colour' on <component>");
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<wire/>\n</system>"),
-            "t/test.xml:3: unknown element <wire> (expected simulation, component, connection or "
-            "record)");
+            "t/test.xml:3: unknown element <wire> (expected simulation, component, connection, "
+            "replicate or record)");
   EXPECT_EQ(error_of("<system>\n<simulation step='0.0000000001'/>\n<component name='a' fmu='m'/>"
                      "</system>"),
             "t/test.xml:2: step: '0.0000000001' is not a whole number of nanoseconds");
@@ -159,7 +159,7 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
 TEST(cosim_system_builder, builds_the_chain_with_groups_parameters_and_decimation) {
   const auto s = parse_system_file(k_data / "chain.xml");
   auto built = build_system(s, mock_options());
-  auto& algo = built.execution->algorithm();
+  auto& algo = *built.execution;
   EXPECT_TRUE(algo.frozen());
   EXPECT_EQ(algo.connections().size(), 5u);  // 1 + 3 (group) + 1
   EXPECT_EQ(algo.step_multiple(1), 2);
@@ -180,9 +180,9 @@ TEST(cosim_system_builder, ranges_pair_in_order_and_sizes_must_match) {
       "<component name='b' fmu='m'/>"
       "<connection from='a.vec[3:2]' to='b.vin[1:2]'/></system>");
   auto built = build_system(s, mock_options());
-  const auto& conns = built.execution->algorithm().connections();
+  const auto& conns = built.execution->connections();
   ASSERT_EQ(conns.size(), 2u);
-  const auto& md = built.execution->algorithm().component_at(0).model_description();
+  const auto& md = built.execution->component_at(0).model_description();
   EXPECT_EQ(md.variables[conns[0].from.variable].name, "vec[3]");
   EXPECT_EQ(md.variables[conns[0].to.variable].name, "vin[1]");
   EXPECT_EQ(md.variables[conns[1].from.variable].name, "vec[2]");
@@ -300,7 +300,7 @@ TEST(cosim_system_api, builds_the_same_system_as_the_xml) {
   EXPECT_THROW(apply_override(s, "amp.gain"), validation_error);
   EXPECT_THROW(apply_override(s, "nobody.gain=1"), validation_error);
   auto built = build_system(s, mock_options());
-  auto& algo = built.execution->algorithm();
+  auto& algo = *built.execution;
   const auto y = algo.observe({1, *algo.component_at(1).model_description().index_of("y")});
   built.execution->simulate_until(time_point(std::chrono::milliseconds(20)));
   EXPECT_EQ(algo.real_value(y), 6.0);

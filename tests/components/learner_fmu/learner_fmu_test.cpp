@@ -85,7 +85,7 @@ learner_run run_with_plant(const fs::path& out, int seed, int total_steps) {
   io.log = [log](log_level, std::string_view, std::string_view, std::string_view m) {
     *log += std::string(m) + "\n";
   };
-  fixed_step_algorithm algo(parse_duration("0.02"));
+  execution algo(std::make_unique<fixed_step_algorithm>(parse_duration("0.02")));
   const auto plant = algo.add_component(make_plant());
   const auto learner = algo.add_component(f->instantiate("learner", io));
   auto var = [&](std::size_t c, const std::string& name) {
@@ -109,13 +109,13 @@ learner_run run_with_plant(const fs::path& out, int seed, int total_steps) {
   algo.set_start_value(var(learner, "settle_footsteps"), 0);
   algo.set_start_value(var(learner, "output_dir"), out.string());
   algo.set_start_value(var(learner, "progress_interval"), 0.0);
-  algo.initialize(time_point{}, std::nullopt);
+  algo.initialize(std::nullopt);
   learner_run r;
   for (int i = 0; i < 10'000'000; ++i) {
     const auto outcome = algo.step();
     if (outcome.terminated) break;
   }
-  algo.terminate_all();
+  algo.end();
   std::istringstream table(read_all(out / "v_table.csv"));
   std::string line;
   std::getline(table, line);
@@ -170,17 +170,19 @@ std::string initialization_error(const std::string& var, scalar_value value) {
   if (v == nullptr) return "no variable " + var;
   try {
     c->setup(time_point{}, std::nullopt);
-    const value_reference vr[] = {v->reference};
+    variable_refs refs;
+    value_block in;
     if (auto* s = std::get_if<std::string>(&value)) {
-      const std::string in[] = {*s};
-      c->set_string(vr, in);
+      refs.strings = {v->reference};
+      in.strings = {*s};
     } else if (auto* i = std::get_if<int>(&value)) {
-      const int in[] = {*i};
-      c->set_integer(vr, in);
+      refs.integers = {v->reference};
+      in.integers = {*i};
     } else if (auto* d = std::get_if<double>(&value)) {
-      const double in[] = {*d};
-      c->set_real(vr, in);
+      refs.reals = {v->reference};
+      in.reals = {*d};
     }
+    c->set_values(refs, in);
     c->enter_initialization();
     c->exit_initialization();
   } catch (const std::exception& e) {

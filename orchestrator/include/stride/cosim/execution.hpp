@@ -1,4 +1,10 @@
-// The execution: owns the algorithm, advances time and notifies observers.
+// The execution: owns the components and the algorithm that drives them, advances time and
+// notifies observers.
+//
+// Build → validate → freeze: components, connections and start values are added first;
+// `freeze()` checks every connection (causality, type, unit, inputs driven twice), finds
+// direct-feedthrough loops (Gauss-Seidel) and hands the wiring to the algorithm. After that the
+// topology cannot change.
 #ifndef STRIDE_COSIM_EXECUTION_HPP
 #define STRIDE_COSIM_EXECUTION_HPP
 
@@ -6,9 +12,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stride/cosim/algorithm.hpp"
+#include "stride/cosim/component.hpp"
+#include "stride/cosim/connection_graph.hpp"
+#include "stride/cosim/log.hpp"
+#include "stride/cosim/scalar_value.hpp"
 #include "stride/cosim/time.hpp"
 
 namespace stride::cosim {
@@ -31,6 +42,13 @@ class observer {
                                 const std::string& /*error*/) {}
 };
 
+/// A handle to read a variable's current value; see execution::observe.
+struct observed_variable {
+  variable_id id;
+  variable_type type = variable_type::real;  ///< exchange type (never enumeration)
+  std::size_t index = 0;                     ///< the algorithm's handle
+};
+
 /// How a run ended.
 struct run_result {
   time_point end_time{};
@@ -39,25 +57,41 @@ struct run_result {
   std::string terminated_by;  ///< component name when terminated_by_component
 };
 
-/// Time loop over one fixed_step_algorithm.
+/// Components, their connections and their algorithm, run over time.
 class execution {
  public:
-  /// \pre algo is not null.
-  execution(std::unique_ptr<fixed_step_algorithm> algo, time_point start);
+  /// \pre algo is not null. `log` receives validation warnings (e.g. unit mismatches).
+  execution(std::unique_ptr<algorithm> algo, time_point start = {}, log_sink log = {});
   ~execution();
   execution(const execution&) = delete;
   execution& operator=(const execution&) = delete;
 
-  fixed_step_algorithm& algorithm() noexcept { return *algo_; }
-  const fixed_step_algorithm& algorithm() const noexcept { return *algo_; }
+  /// Adds a component that steps every `step_multiple` base steps; returns its index.
+  /// \throws validation_error after freeze(), for a duplicate name or a multiple < 1.
+  std::size_t add_component(std::unique_ptr<component> c, int step_multiple = 1);
+  /// Connects an output to an input (or parameter). Checked in freeze().
+  void connect(variable_id from, variable_id to, connection_options options = {});
+  /// Value set before initialization (parameters, start values of inputs).
+  /// \throws validation_error if the variable cannot be set or the value has the wrong type.
+  void set_start_value(variable_id var, scalar_value value, const std::string& origin = {});
 
+  /// Validates and fixes the topology. \throws validation_error with every message naming
+  /// components, variables and connection origins; an algebraic loop is spelled out.
+  void freeze();
+  bool frozen() const noexcept { return frozen_; }
+
+  /// Makes a variable readable after every step; allowed until initialize().
+  observed_variable observe(variable_id var);
   /// \throws validation_error after initialize().
   void add_observer(std::shared_ptr<observer> obs);
 
-  /// Freezes and initializes the algorithm; `stop` is passed to the components.
+  /// Freezes if needed and initializes the components; `stop` is passed to them.
   void initialize(std::optional<time_point> stop);
   bool initialized() const noexcept { return initialized_; }
 
+  /// One base step (initializes first if needed); observers are told.
+  /// \throws component_error naming component, function and time.
+  step_outcome step();
   /// Steps until `stop` (ends at the last communication point ≤ stop) or until a component
   /// requests termination. Initializes first if needed; may be called again with a later stop.
   /// On an error or a termination request the execution ends: observers are told (recorders
@@ -68,14 +102,50 @@ class execution {
   bool ended() const noexcept { return finished_; }
 
   time_point start_time() const noexcept { return start_; }
-  time_point current_time() const noexcept;
+  time_point current_time() const noexcept { return now_; }
+  std::int64_t step_count() const noexcept { return steps_; }
+  duration base_step() const noexcept { return algo_->base_step(); }
+  /// The algorithm's name ("gauss-seidel", "jacobi") for reports.
+  std::string algorithm_name() const { return algo_->describe(); }
+
+  std::size_t component_count() const noexcept { return components_.size(); }
+  component& component_at(std::size_t index) { return *components_.at(index); }
+  const component& component_at(std::size_t index) const { return *components_.at(index); }
+  int step_multiple(std::size_t index) const { return multiples_.at(index); }
+  /// Index of the component called `name`, or nullopt.
+  std::optional<std::size_t> find_component(std::string_view name) const noexcept;
+  /// Stepping order (component indices), valid after freeze().
+  const std::vector<std::size_t>& order() const noexcept { return order_; }
+  const std::vector<connection>& connections() const noexcept { return connections_; }
+  /// "comp.var" of a variable.
+  std::string full_name(variable_id var) const;
+
+  /// Current values (the latest value of each component at a time ≤ current_time()).
+  double real_value(const observed_variable& v) const { return algo_->real_value(v.index); }
+  int integer_value(const observed_variable& v) const { return algo_->integer_value(v.index); }
+  bool boolean_value(const observed_variable& v) const { return algo_->boolean_value(v.index); }
+  const std::string& string_value(const observed_variable& v) const {
+    return algo_->string_value(v.index);
+  }
 
  private:
+  component_declarations declarations() const;
+  void check_variable(variable_id id, const std::string& context) const;
   void finish(time_point t, const std::string& error) noexcept;
+  void terminate_components() noexcept;
 
-  std::unique_ptr<fixed_step_algorithm> algo_;
+  std::unique_ptr<stride::cosim::algorithm> algo_;
+  log_sink log_;
+  std::vector<std::unique_ptr<component>> components_;
+  std::vector<int> multiples_;
+  std::vector<connection> connections_;
+  std::vector<start_values> starts_;
+  std::vector<std::size_t> order_;
   std::vector<std::shared_ptr<observer>> observers_;
   time_point start_;
+  time_point now_;
+  std::int64_t steps_ = 0;
+  bool frozen_ = false;
   bool initialized_ = false;
   bool finished_ = false;
 };

@@ -20,7 +20,7 @@ bool glob_match(std::string_view pattern, std::string_view text) noexcept;
 /// Variables whose full name "comp.var" matches `pattern`. A pattern without wildcards names
 /// exactly one variable of any causality; a wildcard pattern matches inputs and outputs only.
 /// Results are in component order, then model description order.
-std::vector<variable_id> find_variables(const fixed_step_algorithm& algo, std::string_view pattern);
+std::vector<variable_id> find_variables(const execution& ex, std::string_view pattern);
 
 /// Writes one CSV row per recording interval: `time` first, then one column per variable,
 /// headed by its full name "comp.var" (FMPy/cosim style; Booleans as 0/1, strings quoted,
@@ -33,7 +33,7 @@ class csv_recorder : public observer {
                std::optional<duration> interval = std::nullopt);
   /// Records the variables matching any of `patterns`.
   static std::shared_ptr<csv_recorder> from_patterns(std::filesystem::path file,
-                                                     const fixed_step_algorithm& algo,
+                                                     const execution& ex,
                                                      const std::vector<std::string>& patterns,
                                                      std::optional<duration> interval = {});
   ~csv_recorder() override;

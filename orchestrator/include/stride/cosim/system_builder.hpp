@@ -3,7 +3,6 @@
 #define STRIDE_COSIM_SYSTEM_BUILDER_HPP
 
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,12 +10,10 @@
 #include "stride/cosim/execution.hpp"
 #include "stride/cosim/fmu.hpp"
 #include "stride/cosim/log.hpp"
+#include "stride/cosim/placement.hpp"
 #include "stride/cosim/system_structure.hpp"
 
 namespace stride::cosim {
-
-/// Whether an FMU reference is a bundled name ("gait") rather than a path ("x/gait.fmu").
-bool is_bundled_fmu_name(std::string_view fmu) noexcept;
 
 /// The folders searched for bundled FMUs: each entry of $STRIDE_FMU_PATH (':'-separated), then
 /// the build's FMU folder (STRIDE_FMU_OUTPUT_DIR).
@@ -27,15 +24,16 @@ std::vector<std::filesystem::path> default_fmu_search_path();
 std::filesystem::path resolve_fmu(const component_spec& component, const system_structure& system,
                                   const std::vector<std::filesystem::path>& search_path);
 
-/// Creates a component for a spec; used instead of FMU import when set (tests, proxies).
-using component_factory = std::function<std::unique_ptr<component>(const component_spec&)>;
-
 struct build_options {
   std::vector<std::filesystem::path> fmu_search_path = default_fmu_search_path();
-  component_factory factory;  ///< empty = import FMUs
+  /// Tried in order for every component; then in-process FMU import for the components
+  /// without a `worker`. A component that no resolver takes is an error.
+  std::vector<std::shared_ptr<placement_resolver>> placements;
   fmu_import_options import;
   log_sink log;  ///< component and validation messages; empty = stderr
   bool fmu_debug_logging = false;
+  /// Threads for stepping independent components concurrently (results do not depend on it).
+  int threads = 1;
 };
 
 /// Per-component facts for reports and manifests.
@@ -46,6 +44,7 @@ struct component_info {
   std::string model_name;
   std::string generation_tool;
   int step_multiple = 1;
+  std::string worker;  ///< where it runs; empty = this process
 };
 
 /// A built system.
@@ -57,13 +56,14 @@ struct built_system {
   time_point stop{};
 };
 
-/// Loads components, applies parameters, expands and checks connections, freezes the algorithm.
+/// Expands replica groups, creates the components where their specs place them, applies
+/// parameters, expands and checks connections, freezes the execution.
 /// The stop time must be set (`system.stop`) and (stop - start) must be a whole number of base
 /// steps. \throws validation_error / fmu_import_error / component_error naming file and line.
 built_system build_system(const system_structure& system, const build_options& options = {});
 
-/// Expands one side of a connection spec ("comp.var", "comp.var[*]", "comp.var[2:5]") into
-/// variable indices of `md`, in ascending index order. \throws validation_error.
+/// Expands the variable part of a connection side ("var", "var[*]", "var[2:5]") into variable
+/// indices of `md`, in ascending index order. \throws validation_error.
 std::vector<std::size_t> expand_variable_group(const model_description& md,
                                                std::string_view variable_pattern,
                                                const std::string& context);

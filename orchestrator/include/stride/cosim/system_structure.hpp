@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "stride/cosim/algorithm.hpp"
@@ -36,9 +37,16 @@ struct component_spec {
   /// FMU folder.
   std::string fmu;
   int step_multiple = 1;
+  /// Where the component runs: empty = in this process; otherwise the name of a worker
+  /// process (placement by the resolvers of build_options).
+  std::string worker;
   std::vector<parameter_setting> parameters;
   source_location where;
 };
+
+/// Whether an FMU reference is the bare name of a bundled FMU ("gait": not empty, no '/', no
+/// ".fmu" suffix) rather than a path ("x/gait.fmu", "gait.fmu").
+bool is_bundled_fmu_name(std::string_view fmu) noexcept;
 
 /// A connection between "comp.var" names. Either side may be a group: "comp.var[*]" (every
 /// index present) or "comp.var[1:12]" (an inclusive range); the two sides are paired in
@@ -60,6 +68,20 @@ struct record_spec {
   source_location where;
 };
 
+/// `count` copies of a group of components with their internal connections. Copy k of member
+/// "gait" is the component "gait[k]" (k = 1..count); inside the group a member's name means the
+/// member of the same copy, other names mean components outside the group. Outside the group,
+/// "gait[*].x" (all copies, ascending) or "gait[2:3].x" connect to the copies, e.g. to the
+/// elements of an array variable "monitor.x[*]". In a member's parameter values "${copy}" is
+/// replaced by k and "${copy:a;b;c}" by the k-th item of the list (one item per copy).
+struct replica_group {
+  std::string name;
+  int count = 1;
+  std::vector<component_spec> components;
+  std::vector<connection_spec> connections;
+  source_location where;
+};
+
 /// A whole system.
 struct system_structure {
   std::string name = "system";
@@ -73,16 +95,24 @@ struct system_structure {
   algorithm_kind algorithm = algorithm_kind::gauss_seidel;
   std::vector<component_spec> components;
   std::vector<connection_spec> connections;
+  std::vector<replica_group> groups;  ///< expanded by expand_replicas()
   record_spec record;
 
   /// Convenience for C++ callers; each returns the added element.
   component_spec& add_component(std::string name, std::string fmu, int step_multiple = 1);
   connection_spec& connect(std::string from, std::string to, bool delayed = false);
-  /// Sets (or replaces) "comp.var" = value. \throws validation_error for an unknown component
-  /// or a name without a dot.
+  /// Sets (or replaces) "comp.var" = value; "gait.var" for a group member sets it in every
+  /// copy. \throws validation_error for an unknown component, a single copy ("gait[2].var") or a
+  /// name without a dot.
   void set(const std::string& full_name, std::string value, source_location where = {});
   component_spec* find_component(std::string_view name) noexcept;
 };
+
+/// The system with every replica group replaced by its copies (components "member[k]" after the
+/// system's own components, in group order, copy by copy) and their internal connections.
+/// \throws validation_error naming the group for a count below 1 or a member name that is
+/// already a component.
+system_structure expand_replicas(const system_structure& system);
 
 /// Applies a command-line override "comp.var=value" via system_structure::set.
 /// \throws validation_error if the text has no '=' or names no component.

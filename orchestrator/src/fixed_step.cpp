@@ -1,0 +1,401 @@
+// The fixed-step master algorithm: value caches per component, wiring of connections to inputs,
+// initialization, and the macro step (sequential, or spread over threads by a step_plan).
+#include <algorithm>
+#include <map>
+#include <thread>
+
+#include "stride/cosim/algorithm.hpp"
+#include "stride/cosim/error.hpp"
+#include "task_runner.hpp"
+
+namespace stride::cosim {
+
+std::string_view to_string(algorithm_kind kind) noexcept {
+  return kind == algorithm_kind::jacobi ? "jacobi" : "gauss-seidel";
+}
+
+int default_thread_count() noexcept {
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+namespace {
+
+// the list of one exchange type inside a batch
+template <class T>
+auto& lane(variable_refs& r) {
+  if constexpr (std::is_same_v<T, double>) return r.reals;
+  if constexpr (std::is_same_v<T, int>) return r.integers;
+  if constexpr (std::is_same_v<T, bool>) return r.booleans;
+  if constexpr (std::is_same_v<T, std::string>) return r.strings;
+}
+template <class T>
+auto& lane(value_block& b) {
+  if constexpr (std::is_same_v<T, double>) return b.reals;
+  if constexpr (std::is_same_v<T, int>) return b.integers;
+  if constexpr (std::is_same_v<T, bool>) return b.booleans;
+  if constexpr (std::is_same_v<T, std::string>) return b.strings;
+}
+template <class T>
+const auto& lane(const value_block& b) {
+  return lane<T>(const_cast<value_block&>(b));
+}
+
+// calls f.template operator()<T>() for the four exchange types
+template <class F>
+void for_each_type(F&& f) {
+  f.template operator()<double>();
+  f.template operator()<int>();
+  f.template operator()<bool>();
+  f.template operator()<std::string>();
+}
+
+// where an input's value comes from: an output slot of a component
+struct source {
+  std::size_t component = 0;
+  std::size_t slot = 0;
+  bool previous = false;  // reads the previous communication point (delayed or Jacobi)
+};
+
+// inputs of one component with their sources, one list per type (parallel to `refs`)
+struct input_wiring {
+  variable_refs refs;
+  std::vector<source> reals, integers, booleans, strings;
+  value_block values;
+
+  template <class T>
+  std::vector<source>& sources() {
+    if constexpr (std::is_same_v<T, double>) return reals;
+    if constexpr (std::is_same_v<T, int>) return integers;
+    if constexpr (std::is_same_v<T, bool>) return booleans;
+    if constexpr (std::is_same_v<T, std::string>) return strings;
+  }
+};
+
+struct entry {
+  component* c = nullptr;
+  int multiple = 1;
+  time_point time{};
+  variable_refs outputs;     // read after every step: connected sources and observed variables
+  value_block latest;        // at the component's current time
+  value_block published;     // at its previous communication point
+  input_wiring step_inputs;  // inputs and tunable parameters: set with every step
+  input_wiring init_inputs;  // fixed parameters: set during initialization only
+  std::map<std::size_t, std::size_t> slot_of;  // variable index → slot in its type's lane
+  bool needs_published = true;  // someone reads its previous values (delay, Jacobi, decimation)
+  bool steps_now = false;       // it steps in the current macro step
+  bool terminated = false;
+};
+
+}  // namespace
+
+class fixed_step_algorithm::impl {
+ public:
+  duration step{};
+  algorithm_kind kind = algorithm_kind::gauss_seidel;
+  int threads = 1;
+  system_wiring wiring;
+  std::vector<std::size_t> order;
+  std::vector<entry> entries;
+  std::vector<std::pair<std::size_t, std::size_t>> observed;  // component, slot
+  std::vector<variable_type> observed_type;
+  step_plan plan;
+  std::unique_ptr<task_runner> runner;
+  bool initialized = false;
+  time_point start{};
+  time_point now{};
+  std::int64_t steps = 0;
+
+  const variable_description& var(variable_id id) const {
+    return entries.at(id.component).c->model_description().variables.at(id.variable);
+  }
+
+  // the output slot of a variable in its component's caches, added once
+  std::size_t add_output(variable_id id) {
+    entry& e = entries[id.component];
+    if (auto it = e.slot_of.find(id.variable); it != e.slot_of.end()) return it->second;
+    const auto& v = var(id);
+    const std::size_t slot = e.outputs.add(exchange_type(v.type), v.reference);
+    e.slot_of.emplace(id.variable, slot);
+    return slot;
+  }
+
+  template <class T>
+  void add_input(input_wiring& w, const connection& c, std::size_t slot) {
+    lane<T>(w.refs).push_back(var(c.to).reference);
+    w.sources<T>().push_back(
+        {c.from.component, slot, c.options.delayed || kind == algorithm_kind::jacobi});
+  }
+
+  void wire_inputs() {
+    for (const auto& c : wiring.connections) {
+      const std::size_t slot = add_output(c.from);
+      const auto& to = var(c.to);
+      const bool init_only =
+          to.causality == causality::parameter && to.variability != variability::tunable;
+      entry& e = entries[c.to.component];
+      input_wiring& w = init_only ? e.init_inputs : e.step_inputs;
+      switch (exchange_type(to.type)) {
+        case variable_type::real:
+          add_input<double>(w, c, slot);
+          break;
+        case variable_type::integer:
+          add_input<int>(w, c, slot);
+          break;
+        case variable_type::boolean:
+          add_input<bool>(w, c, slot);
+          break;
+        case variable_type::string:
+          add_input<std::string>(w, c, slot);
+          break;
+        case variable_type::enumeration:
+          break;
+      }
+    }
+  }
+
+  // The value of a source as seen at time t. A source that steps in this macro step and is read
+  // at the previous communication point gives its published values, written before any
+  // component stepped: that read never races with the source's own step on another thread.
+  template <class T>
+  auto read(const source& s, time_point t) const {
+    const entry& e = entries[s.component];
+    if (s.previous && e.steps_now) return lane<T>(e.published)[s.slot];
+    return e.time <= t ? lane<T>(e.latest)[s.slot] : lane<T>(e.published)[s.slot];
+  }
+
+  void transfer(input_wiring& w, time_point current, time_point previous) {
+    for_each_type([&]<class T>() {
+      auto& values = lane<T>(w.values);
+      const auto& sources = w.sources<T>();
+      for (std::size_t i = 0; i < sources.size(); ++i) {
+        values[i] = read<T>(sources[i], sources[i].previous ? previous : current);
+      }
+    });
+  }
+
+  // runs `f`, turning any exception into a component_error naming the component and the time
+  template <class F>
+  void guarded(const entry& e, time_point t, const char* phase, F&& f) {
+    try {
+      f();
+    } catch (const component_error& ex) {
+      throw component_error(std::string(ex.what()) + " (" + phase + " at t = " + format_seconds(t) +
+                            " s)");
+    } catch (const std::exception& ex) {
+      throw component_error("component '" + e.c->name() + "': " + ex.what() + " (" + phase +
+                            " at t = " + format_seconds(t) + " s)");
+    }
+  }
+
+  // one component's part of the macro step from t; false when it asked to terminate
+  bool step_entry(entry& e, time_point t, time_point next) {
+    if (!e.steps_now) return true;
+    const duration dt = step * e.multiple;
+    step_result r = step_result::complete;
+    guarded(e, t, "step", [&] {
+      // Gauss-Seidel reads upstream values at the end of the step, Jacobi at its start
+      transfer(e.step_inputs, kind == algorithm_kind::jacobi ? t : next, t);
+      r = e.c->step(e.time, dt, e.step_inputs.values, e.latest);
+    });
+    if (r == step_result::terminate) {
+      e.terminated = true;
+      return false;
+    }
+    e.time += dt;
+    return true;
+  }
+};
+
+fixed_step_algorithm::fixed_step_algorithm(duration base_step, algorithm_kind kind, int threads)
+    : pimpl_(std::make_unique<impl>()) {
+  if (base_step <= duration::zero()) {
+    throw validation_error("base step must be positive, got " + format_seconds(base_step) + " s");
+  }
+  if (threads < 1) {
+    throw validation_error("thread count must be at least 1, got " + std::to_string(threads));
+  }
+  pimpl_->step = base_step;
+  pimpl_->kind = kind;
+  pimpl_->threads = threads;
+}
+
+fixed_step_algorithm::~fixed_step_algorithm() = default;
+
+algorithm_kind fixed_step_algorithm::kind() const noexcept {
+  return pimpl_->kind;
+}
+int fixed_step_algorithm::threads() const noexcept {
+  return pimpl_->threads;
+}
+duration fixed_step_algorithm::base_step() const noexcept {
+  return pimpl_->step;
+}
+std::string fixed_step_algorithm::describe() const {
+  return std::string(to_string(pimpl_->kind));
+}
+
+std::vector<std::size_t> fixed_step_algorithm::stepping_order(const system_wiring& w) const {
+  if (pimpl_->kind == algorithm_kind::gauss_seidel) {
+    return gauss_seidel_order(w.components.size(), w.connections);
+  }
+  std::vector<std::size_t> order(w.components.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  return order;
+}
+
+void fixed_step_algorithm::setup(system_wiring wiring, std::vector<std::size_t> order) {
+  auto& p = *pimpl_;
+  if (!p.entries.empty()) throw validation_error("algorithm set up twice");
+  if (p.kind == algorithm_kind::gauss_seidel) {
+    // values travel within the step: a direct-feedthrough loop has no solution
+    component_declarations d;
+    for (component* c : wiring.components) {
+      d.names.push_back(c->name());
+      d.descriptions.push_back(&c->model_description());
+    }
+    check_algebraic_loops(d, wiring.connections);
+  }
+  p.wiring = std::move(wiring);
+  p.order = std::move(order);
+  for (std::size_t i = 0; i < p.wiring.components.size(); ++i) {
+    entry e;
+    e.c = p.wiring.components[i];
+    e.multiple = p.wiring.step_multiples.at(i);
+    p.entries.push_back(std::move(e));
+  }
+  p.wire_inputs();
+  // previous values are read only through delays, Jacobi transfer or decimation
+  for (auto& e : p.entries) e.needs_published = p.kind == algorithm_kind::jacobi || e.multiple > 1;
+  for (const auto& c : p.wiring.connections) {
+    if (c.options.delayed) p.entries[c.from.component].needs_published = true;
+  }
+  p.plan = plan_steps(p.order, p.wiring.connections, p.kind == algorithm_kind::jacobi);
+  if (p.threads > 1 && p.plan.tasks.size() > 1) {
+    p.runner = std::make_unique<task_runner>(
+        std::min<int>(p.threads, static_cast<int>(p.plan.tasks.size())));
+  }
+}
+
+std::size_t fixed_step_algorithm::observe(variable_id id) {
+  auto& p = *pimpl_;
+  if (p.initialized) throw validation_error("cannot observe variables after initialize()");
+  const std::size_t slot = p.add_output(id);
+  p.observed.emplace_back(id.component, slot);
+  p.observed_type.push_back(exchange_type(p.var(id).type));
+  return p.observed.size() - 1;
+}
+
+void fixed_step_algorithm::initialize(time_point start, std::optional<time_point> stop) {
+  auto& p = *pimpl_;
+  if (p.initialized) throw validation_error("initialize() called twice");
+  p.start = p.now = start;
+  p.steps = 0;
+  p.initialized = true;
+  for (auto& e : p.entries) {
+    e.latest.resize_for(e.outputs);
+    e.published.resize_for(e.outputs);
+    e.step_inputs.values.resize_for(e.step_inputs.refs);
+    e.init_inputs.values.resize_for(e.init_inputs.refs);
+  }
+  // setup, start values, the exchange declaration
+  for (std::size_t i = 0; i < p.entries.size(); ++i) {
+    entry& e = p.entries[i];
+    std::optional<time_point> own_stop;
+    if (stop) {
+      // a slow component's last step may end after the stop time
+      const auto period = p.step * e.multiple;
+      const auto periods = (*stop - start + period - duration(1)) / period;
+      own_stop = start + periods * period;
+    }
+    e.time = start;
+    p.guarded(e, start, "setup", [&] {
+      e.c->setup(start, own_stop);
+      const start_values& sv = p.wiring.starts.at(i);
+      if (!sv.refs.empty()) e.c->set_values(sv.refs, sv.values);
+      e.c->expose(e.step_inputs.refs, e.outputs);
+      e.c->enter_initialization();
+    });
+  }
+  // initial value exchange in stepping order, so feedthrough chains settle
+  for (auto& e : p.entries) {
+    p.guarded(e, start, "initialization", [&] { e.c->get_values(e.outputs, e.latest); });
+  }
+  for (std::size_t i : p.order) {
+    entry& e = p.entries[i];
+    p.guarded(e, start, "initialization", [&] {
+      p.transfer(e.step_inputs, start, start);
+      p.transfer(e.init_inputs, start, start);
+      e.c->set_values(e.step_inputs.refs, e.step_inputs.values);
+      e.c->set_values(e.init_inputs.refs, e.init_inputs.values);
+      e.c->get_values(e.outputs, e.latest);
+    });
+  }
+  for (auto& e : p.entries) {
+    p.guarded(e, start, "initialization", [&] {
+      e.c->exit_initialization();
+      e.c->get_values(e.outputs, e.latest);
+    });
+    e.published = e.latest;
+  }
+}
+
+step_outcome fixed_step_algorithm::step(time_point t) {
+  auto& p = *pimpl_;
+  if (!p.initialized) throw validation_error("step() before initialize()");
+  const time_point next = p.start + (p.steps + 1) * p.step;
+  // who steps now; their current values become the previous communication point's
+  for (auto& e : p.entries) {
+    e.steps_now = p.steps % e.multiple == 0;
+    if (e.steps_now && e.needs_published) e.published = e.latest;
+  }
+  // a task stops at a component that asks to terminate, and holds back the tasks that wait
+  // for it; the other tasks complete, whatever the thread count
+  const auto run_task = [&](std::size_t task) {
+    for (std::size_t i : p.plan.tasks[task]) {
+      if (!p.step_entry(p.entries[i], t, next)) return false;
+    }
+    return true;
+  };
+  if (p.runner) {
+    p.runner->run(p.plan, run_task);
+  } else {
+    std::vector<bool> blocked(p.plan.tasks.size(), false);
+    for (std::size_t task = 0; task < p.plan.tasks.size(); ++task) {
+      const bool released = !blocked[task] && run_task(task);
+      if (released) continue;
+      for (std::size_t s : p.plan.successors[task]) blocked[s] = true;
+    }
+  }
+  for (std::size_t i : p.order) {
+    if (p.entries[i].terminated) return {true, i};
+  }
+  ++p.steps;
+  p.now = next;
+  return {};
+}
+
+namespace {
+
+template <class T>
+decltype(auto) observed_value(const std::vector<entry>& entries,
+                              const std::pair<std::size_t, std::size_t>& where, time_point now) {
+  const entry& e = entries.at(where.first);
+  return e.time <= now ? lane<T>(e.latest)[where.second] : lane<T>(e.published)[where.second];
+}
+
+}  // namespace
+
+double fixed_step_algorithm::real_value(std::size_t k) const {
+  return observed_value<double>(pimpl_->entries, pimpl_->observed.at(k), pimpl_->now);
+}
+int fixed_step_algorithm::integer_value(std::size_t k) const {
+  return observed_value<int>(pimpl_->entries, pimpl_->observed.at(k), pimpl_->now);
+}
+bool fixed_step_algorithm::boolean_value(std::size_t k) const {
+  return observed_value<bool>(pimpl_->entries, pimpl_->observed.at(k), pimpl_->now);
+}
+const std::string& fixed_step_algorithm::string_value(std::size_t k) const {
+  return observed_value<std::string>(pimpl_->entries, pimpl_->observed.at(k), pimpl_->now);
+}
+
+}  // namespace stride::cosim

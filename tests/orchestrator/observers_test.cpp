@@ -1,0 +1,81 @@
+// The observers shipped with libstride: CSV recorder, glob patterns, progress display.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "execution_fixtures.hpp"
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/observers.hpp"
+
+namespace stride::cosim {
+namespace {
+
+using namespace test;
+using ::testing::HasSubstr;
+
+TEST(cosim_observers, csv_recorder_writes_full_names_and_every_type) {
+  temp_dir dir("stride-test-");
+  execution ex(std::make_unique<fixed_step_algorithm>(250 * k_ms, algorithm_kind::gauss_seidel),
+               time_point{}, quiet_log());
+  auto m = std::make_unique<mock_component>("m");
+  m->real("x", causality::output);
+  m->add("n", variable_type::integer, causality::output);
+  m->add("flag", variable_type::boolean, causality::output);
+  m->add("label", variable_type::string, causality::output);
+  m->add("p", variable_type::real, causality::parameter);
+  m->on_step = [](mock_component& self, time_point, duration) {
+    self.r("x") += 0.1;
+    self.i("n") -= 1;
+    self.b("flag") = true;
+    self.s("label") = "a,\"b\"";
+    return step_result::complete;
+  };
+  ex.add_component(std::move(m));
+  const auto csv = dir.path() / "sub" / "r.csv";
+  ex.add_observer(csv_recorder::from_patterns(csv, ex, {"m.*"}, 500 * k_ms));
+  const auto result = ex.simulate_until(time_point(std::chrono::seconds(1)));
+  ex.end();
+  EXPECT_EQ(result.steps, 4);
+  std::ifstream in(csv);
+  std::stringstream text;
+  text << in.rdbuf();
+  // the parameter is not matched by a wildcard; rows every 0.5 s
+  EXPECT_EQ(text.str(),
+            "time,m.x,m.n,m.flag,m.label\n"
+            "0,0,0,0,\"\"\n"
+            "0.5,0.2,-2,1,\"a,\"\"b\"\"\"\n"
+            "1,0.4,-4,1,\"a,\"\"b\"\"\"\n");
+}
+
+TEST(cosim_observers, recording_interval_must_be_a_multiple_of_the_base_step) {
+  execution ex(std::make_unique<fixed_step_algorithm>(10 * k_ms, algorithm_kind::gauss_seidel),
+               time_point{}, quiet_log());
+  ex.add_component(counter("a", {}));
+  temp_dir dir("stride-test-");
+  EXPECT_THROW(ex.add_observer(std::make_shared<csv_recorder>(
+                   dir.path() / "x.csv", std::vector<variable_id>{}, 15 * k_ms)),
+               validation_error);
+}
+
+TEST(cosim_observers, glob_match) {
+  EXPECT_TRUE(glob_match("robot.*", "robot.base_x"));
+  EXPECT_TRUE(glob_match("*.fallen", "robot.fallen"));
+  EXPECT_TRUE(glob_match("gait.joint_angle[?]", "gait.joint_angle[3]"));
+  EXPECT_FALSE(glob_match("gait.joint_angle[?]", "gait.joint_angle[13]"));
+  EXPECT_TRUE(glob_match("*a*b*", "xxaxxbxx"));
+  EXPECT_FALSE(glob_match("robot.*", "gait.x"));
+}
+
+TEST(cosim_observers, progress_line_shows_time_rtf_and_eta) {
+  progress_display p(time_point(std::chrono::seconds(60)), stderr, false);
+  const std::string line = p.format(time_point(std::chrono::seconds(30)), 10.0);
+  EXPECT_THAT(line, HasSubstr("t = 30.000 / 60.000 s (50.0%)"));
+  EXPECT_THAT(line, HasSubstr("RTF 3.00x"));
+  EXPECT_THAT(line, HasSubstr("ETA 10 s"));
+}
+
+}  // namespace
+}  // namespace stride::cosim

@@ -1,0 +1,25 @@
+// Values of any FMI type and their text form.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "stride/cosim/scalar_value.hpp"
+
+namespace stride::cosim {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(cosim_scalar, parse_and_format) {
+  EXPECT_EQ(std::get<double>(parse_scalar(variable_type::real, "1.5")), 1.5);
+  EXPECT_EQ(std::get<int>(parse_scalar(variable_type::integer, "-3")), -3);
+  EXPECT_EQ(std::get<bool>(parse_scalar(variable_type::boolean, "true")), true);
+  EXPECT_EQ(std::get<bool>(parse_scalar(variable_type::boolean, "0")), false);
+  EXPECT_EQ(std::get<std::string>(parse_scalar(variable_type::string, "a b")), "a b");
+  EXPECT_THROW(parse_scalar(variable_type::real, "abc"), std::invalid_argument);
+  EXPECT_THROW(parse_scalar(variable_type::integer, "1.5"), std::invalid_argument);
+  EXPECT_THROW(parse_scalar(variable_type::boolean, "yes"), std::invalid_argument);
+  EXPECT_EQ(format_scalar(0.1), "0.1");
+}
+
+}  // namespace
+}  // namespace stride::cosim
