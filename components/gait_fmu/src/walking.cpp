@@ -1,5 +1,6 @@
-// The walking generator: darwin-walking.md §3 (clock and latching), §4 (trajectories), §7 (servo
-// values), §8 (gyro feedback), §9 (start/stop, IK failure).
+// The walking generator. Sections (§) refer to docs/walking-generator.md: §3 (clock and
+// latching), §4 (trajectories), §7 (servo values), §8 (gyro feedback), §9 (start/stop, IK
+// failure).
 //
 // Bit-exactness notes: every oscillator value is computed as A * sin(2pi/P * t - shift) + B with
 // the operands in the framework's order (2pi as 2 * 3.141592, shifts with pi = 3.14159265). The

@@ -1,4 +1,4 @@
-// config.ini reading/writing (§2.1) and the parameter table.
+// config.ini reading/writing (docs/walking-generator.md §2.1) and the parameter table.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

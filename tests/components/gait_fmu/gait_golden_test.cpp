@@ -1,5 +1,5 @@
 // The two golden scenarios of the ROBOTIS framework, every tick, every servo, exact; and the
-// end-point file to 1e-9 (data copied byte-identical from the project's golden data).
+// end-point file to 1e-9 (data: the original framework's output, docs/walking-generator.md §0.3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@ namespace {
 
 using namespace stride::gait;
 
-/// Runs the golden driver sequence (README of the golden data) and compares every row.
+/// Runs the golden driver sequence (docs/walking-generator.md §12) and compares every row.
 void check_servo_file(const std::string& file, double x_mm, int expected_ticks) {
   const gait_test::csv golden = gait_test::read_csv(gait_test::data_path(file));
   ASSERT_EQ(golden.header.size(), 22u);
@@ -88,7 +88,8 @@ TEST(gait_golden, forward_x20_end_points) {
   EXPECT_LE(worst, 1e-9);
 }
 
-// The four rows of the sheet's reference table (§12) are ticks 150, 169, 187, 206.
+// The four rows of the reference table (docs/walking-generator.md §12) are ticks 150, 169, 187,
+// 206.
 TEST(gait_golden, reference_table_phases) {
   const walking gen;
   const walking_params params;

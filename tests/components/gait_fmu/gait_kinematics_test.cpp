@@ -1,4 +1,5 @@
-// Leg IK/FK (§6), the darwin IK quirk (§6.4), servo conversion and the templated standing posture.
+// Leg IK/FK, the darwin IK quirk, servo conversion and the templated standing posture. Sections
+// (§) refer to docs/walking-generator.md: IK/FK §6, the quirk §6.4.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,7 +59,7 @@ TEST(gait_kinematics, geometric_ik_round_trip_along_a_walk) {
   }
 }
 
-TEST(gait_kinematics, sheet_standing_example_angles) {
+TEST(gait_kinematics, reference_standing_example_angles) {
   // §6.3: right leg e_R = (-10, -2.5, 20, 0, 0, 0), framework behaviour
   double q[6];
   ASSERT_TRUE(leg_ik(foot_target<double>{-10, -2.5, 20, 0, 0, 0}, ik_mode::darwin, q));

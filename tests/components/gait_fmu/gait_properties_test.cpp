@@ -1,5 +1,6 @@
 // Property tests of the generator: timing grid, phase boundaries, symmetry, latch schedule,
-// stop sequence, IK failure, gyro feedback, footsteps, state copies.
+// stop sequence, IK failure, gyro feedback, footsteps, state copies. Sections (§) refer to
+// docs/walking-generator.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>

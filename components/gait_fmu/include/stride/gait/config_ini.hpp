@@ -1,5 +1,5 @@
 // ROBOTIS-style config.ini support: a line-preserving INI document and the [Walking Config]
-// reader/writer (darwin-walking.md §2.1).
+// reader/writer (docs/walking-generator.md §2.1).
 //
 // Format: sections "[name]" and keys are matched case-insensitively; "key = value" or
 // "key: value"; ';' or '#' start a comment on a whole line and also after a value (outside double

@@ -1,4 +1,5 @@
-// DARwIn-OP leg kinematics and servo constants (darwin-walking.md §1, §5, §6, §7).
+// DARwIn-OP leg kinematics and servo constants (docs/walking-generator.md §1, §5, §6, §7; § below
+// refers to that page).
 //
 // Header-only templates on the scalar type T (double or ceres::Jet) so that a calibration can
 // autodiff through the inverse kinematics. Only std::sin/cos/atan2/acos/sqrt and comparisons are

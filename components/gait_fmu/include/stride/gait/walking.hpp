@@ -1,6 +1,7 @@
-// The DARwIn-OP / ROBOTIS-OP walking generator (darwin-walking.md), bit-exact to the ROBOTIS
-// framework's servo output. Plain C++: the configuration (IK mode) lives in the const `walking`
-// object, everything that evolves lives in the trivially copyable `walking_state`.
+// The DARwIn-OP / ROBOTIS-OP walking generator (docs/walking-generator.md; § below refers to
+// it), bit-exact to the ROBOTIS framework's servo output. Plain C++: the configuration (IK mode)
+// lives in the const `walking` object, everything that evolves lives in the trivially copyable
+// `walking_state`.
 //
 // Typical driver (the golden-data sequence):
 //   walking gen;  walking_params p;  walking_state s = gen.initialize(p);   // standing pose
@@ -83,8 +84,8 @@ struct gait_amplitudes {
   double a_move_shift;  ///< Ab, rad
 };
 
-/// Everything one tick computed before the IK (darwin-walking.md §4.4, §4.2, §7.2): both foot
-/// targets (offsets included), the arm swing and the pelvis bump.
+/// Everything one tick computed before the IK (§4.4, §4.2, §7.2): both foot targets (offsets
+/// included), the arm swing and the pelvis bump.
 struct gait_pose {
   foot_target<double> right;  ///< e_R, right hip frame (mm, rad)
   foot_target<double> left;   ///< e_L, left hip frame

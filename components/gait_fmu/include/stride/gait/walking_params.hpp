@@ -8,7 +8,7 @@
 namespace stride::gait {
 
 /// Every [Walking Config] key of the ROBOTIS framework. The member initialisers are the framework's
-/// constructor defaults (darwin-walking.md §2.2), which are also what the golden data uses.
+/// constructor defaults (docs/walking-generator.md §2.2), which are also what the golden data uses.
 struct walking_params {
   double x_offset = -10;                  ///< mm, constant foot x in the hip frame
   double y_offset = 5;                    ///< mm, lateral foot spacing (left +y/2, right -y/2)
