@@ -71,8 +71,8 @@ bool settable(const variable& v, std::uint32_t state) {
 }
 
 std::string describe(const variable& v) {
-  return "'" + v.name + "' (" + to_string(v.causality_kind) + ", " + to_string(v.variability_kind) +
-         ")";
+  return "'" + v.name + "' (" + std::string(to_string(v.causality_kind)) + ", " +
+         std::string(to_string(v.variability_kind)) + ")";
 }
 
 // Looks up vr as a variable of `type`; logs and returns nullptr otherwise.
@@ -80,7 +80,7 @@ const variable* lookup(instance& inst, const char* function_name, fmi2ValueRefer
                        value_type type) {
   const variable* v = inst.fmu.table.find(vr);
   if (v == nullptr || v->type != type) {
-    inst.log.error(std::string(function_name) + ": no " + to_string(type) +
+    inst.log.error(std::string(function_name) + ": no " + std::string(to_string(type)) +
                    " variable has value reference " + std::to_string(vr));
     return nullptr;
   }
