@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check_fmu_exports.sh FILE.fmu
 #
-# Shared-library hygiene of an FMI 2.0 Co-Simulation FMU (checklist §2.1, §2.3):
+# Shared-library hygiene of an FMI 2.0 Co-Simulation FMU (docs/fmi-rules.md §2.1, §2.3):
 #  - binaries/linux64/<modelIdentifier>.so exports ONLY fmi2* symbols (nm -D --defined-only),
 #    and all 34 Co-Simulation functions are among them, as functions;
 #  - every .so in binaries/linux64/ needs (readelf -d NEEDED) only libc, libm, libpthread, libdl,
