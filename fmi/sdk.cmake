@@ -8,7 +8,8 @@ add_library(stride_sdk STATIC
   src/guid.cpp
   src/model_description.cpp
   src/lifecycle.cpp
-  src/logger.cpp)
+  src/logger.cpp
+  src/resources.cpp)
 target_include_directories(stride_sdk PUBLIC include PRIVATE src)
 target_link_libraries(stride_sdk PUBLIC stride_fmi_api)
 set_target_properties(stride_sdk PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)

@@ -15,6 +15,7 @@
 #include "stride/gait/walking.hpp"
 #include "stride/robot/darwin.hpp"
 #include "stride/robot/robot_model.hpp"
+#include "stride/sdk/resources.hpp"
 #include "text.hpp"
 
 namespace stride::calibration {
@@ -119,9 +120,8 @@ struct plant_simulator::impl {
     for (const auto& p : robot->parameters)
       if (p.variable == "urdf") urdf = p.value;
     const fs::path resources = fmus.at("robot")->extracted_dir() / "resources";
-    fs::path path = urdf.empty() ? resources / "darwin-op.urdf" : fs::path(urdf);
-    if (path.is_relative() && !fs::exists(path) && fs::exists(resources / path))
-      path = resources / path;
+    const fs::path path =
+        urdf.empty() ? resources / "darwin-op.urdf" : sdk::find_resource(urdf, resources);
     model = robot::load_robot_model(path.string());
     const robot::robot_config c = robot::darwin::default_config("");
     const std::string feet[2] = {c.left_foot_link, c.right_foot_link};

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "instance.hpp"
@@ -71,8 +73,8 @@ bool settable(const variable& v, std::uint32_t state) {
 }
 
 std::string describe(const variable& v) {
-  return "'" + v.name + "' (" + to_string(v.causality_kind) + ", " + to_string(v.variability_kind) +
-         ")";
+  return "'" + v.name + "' (" + std::string(to_string(v.causality_kind)) + ", " +
+         std::string(to_string(v.variability_kind)) + ")";
 }
 
 // Looks up vr as a variable of `type`; logs and returns nullptr otherwise.
@@ -80,7 +82,7 @@ const variable* lookup(instance& inst, const char* function_name, fmi2ValueRefer
                        value_type type) {
   const variable* v = inst.fmu.table.find(vr);
   if (v == nullptr || v->type != type) {
-    inst.log.error(std::string(function_name) + ": no " + to_string(type) +
+    inst.log.error(std::string(function_name) + ": no " + std::string(to_string(type)) +
                    " variable has value reference " + std::to_string(vr));
     return nullptr;
   }
@@ -140,25 +142,61 @@ fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr
   return fmi2OK;
 }
 
-// Validates and stores one value; `store` writes it into the data struct.
-template <class Store>
-fmi2Status set_one(instance& inst, const char* name, const variable& v, double numeric,
-                   bool numeric_check, Store store) {
-  if (!settable(v, inst.state)) {
-    return fail(inst, std::string(name) + ": variable " + describe(v) + " cannot be set in state " +
-                          state_name(inst.state));
+// Writes one value at `at`; a String longer than the variable's capacity is refused.
+template <class T>
+void write_value(char* at, const variable&, T x) {
+  std::memcpy(at, &x, sizeof x);
+}
+void write_value(char* at, const variable& v, std::string_view s) {
+  if (s.size() > v.string_capacity) {
+    throw std::length_error("string of " + std::to_string(s.size()) +
+                            " characters exceeds the capacity of " +
+                            std::to_string(v.string_capacity));
   }
-  if (numeric_check) {
-    const std::string problem = range_problem(v, numeric);
-    if (!problem.empty()) return fail(inst, std::string(name) + ": '" + v.name + "': " + problem);
+  std::memcpy(at, s.data(), s.size());
+  at[s.size()] = '\0';
+}
+
+// The four fmi2Set* functions; T is the stored type (std::string_view for String). Each value is
+// checked (settable in this state, numbers in range) before it is written, and the component
+// hears of it through on_set; the first refused value ends the call.
+template <class T, class FmiValue>
+fmi2Status set_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                      const FmiValue value[], function f, value_type type, const char* name) {
+  instance* inst = enter(c, f, name);
+  if (inst == nullptr || null_arguments(*inst, name, nvr, vr, value)) return fmi2Error;
+  for (size_t i = 0; i < nvr; ++i) {
+    const variable* v = lookup(*inst, name, vr[i], type);
+    if (v == nullptr) return fmi2Error;
+    T x;
+    if constexpr (std::is_same_v<T, std::string_view>) {
+      if (value[i] == nullptr) {
+        return fail(*inst, std::string(name) + ": '" + v->name + "': null string");
+      }
+      x = value[i];
+    } else if constexpr (std::is_same_v<T, bool>) {
+      x = value[i] != fmi2False;
+    } else {
+      x = value[i];
+    }
+    if (!settable(*v, inst->state)) {
+      return fail(*inst, std::string(name) + ": variable " + describe(*v) +
+                             " cannot be set in state " + state_name(inst->state));
+    }
+    if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
+      const std::string problem = range_problem(*v, x);
+      if (!problem.empty()) {
+        return fail(*inst, std::string(name) + ": '" + v->name + "': " + problem);
+      }
+    }
+    try {
+      write_value(inst->data + v->offset, *v, x);
+      inst->component->on_set(*v);
+    } catch (const std::exception& e) {
+      return fail(*inst, std::string(name) + ": '" + v->name + "': " + e.what());
+    }
+    inst->values_dirty = true;
   }
-  try {
-    store();
-    inst.component->on_set(v);
-  } catch (const std::exception& e) {
-    return fail(inst, std::string(name) + ": '" + v.name + "': " + e.what());
-  }
-  inst.values_dirty = true;
   return fmi2OK;
 }
 
@@ -434,75 +472,25 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                        const fmi2Real value[]) {
-  instance* inst = enter(c, function::set_real, "fmi2SetReal");
-  if (inst == nullptr || null_arguments(*inst, "fmi2SetReal", nvr, vr, value)) return fmi2Error;
-  for (size_t i = 0; i < nvr; ++i) {
-    const variable* v = lookup(*inst, "fmi2SetReal", vr[i], value_type::real);
-    if (v == nullptr) return fmi2Error;
-    const double x = value[i];
-    const fmi2Status s = set_one(*inst, "fmi2SetReal", *v, x, true,
-                                 [&] { std::memcpy(inst->data + v->offset, &x, sizeof x); });
-    if (s != fmi2OK) return s;
-  }
-  return fmi2OK;
+  return set_values<double>(c, vr, nvr, value, function::set_real, value_type::real, "fmi2SetReal");
 }
 
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[]) {
-  instance* inst = enter(c, function::set_other, "fmi2SetInteger");
-  if (inst == nullptr || null_arguments(*inst, "fmi2SetInteger", nvr, vr, value)) {
-    return fmi2Error;
-  }
-  for (size_t i = 0; i < nvr; ++i) {
-    const variable* v = lookup(*inst, "fmi2SetInteger", vr[i], value_type::integer);
-    if (v == nullptr) return fmi2Error;
-    const int x = value[i];
-    const fmi2Status s = set_one(*inst, "fmi2SetInteger", *v, x, true,
-                                 [&] { std::memcpy(inst->data + v->offset, &x, sizeof x); });
-    if (s != fmi2OK) return s;
-  }
-  return fmi2OK;
+  return set_values<int>(c, vr, nvr, value, function::set_other, value_type::integer,
+                         "fmi2SetInteger");
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[]) {
-  instance* inst = enter(c, function::set_other, "fmi2SetBoolean");
-  if (inst == nullptr || null_arguments(*inst, "fmi2SetBoolean", nvr, vr, value)) {
-    return fmi2Error;
-  }
-  for (size_t i = 0; i < nvr; ++i) {
-    const variable* v = lookup(*inst, "fmi2SetBoolean", vr[i], value_type::boolean);
-    if (v == nullptr) return fmi2Error;
-    const bool x = value[i] != fmi2False;
-    const fmi2Status s = set_one(*inst, "fmi2SetBoolean", *v, 0.0, false,
-                                 [&] { std::memcpy(inst->data + v->offset, &x, sizeof x); });
-    if (s != fmi2OK) return s;
-  }
-  return fmi2OK;
+  return set_values<bool>(c, vr, nvr, value, function::set_other, value_type::boolean,
+                          "fmi2SetBoolean");
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[]) {
-  instance* inst = enter(c, function::set_other, "fmi2SetString");
-  if (inst == nullptr || null_arguments(*inst, "fmi2SetString", nvr, vr, value)) {
-    return fmi2Error;
-  }
-  for (size_t i = 0; i < nvr; ++i) {
-    const variable* v = lookup(*inst, "fmi2SetString", vr[i], value_type::string);
-    if (v == nullptr) return fmi2Error;
-    if (value[i] == nullptr) return fail(*inst, "fmi2SetString: '" + v->name + "': null string");
-    const size_t length = std::strlen(value[i]);
-    const fmi2Status s = set_one(*inst, "fmi2SetString", *v, 0.0, false, [&] {
-      if (length > v->string_capacity) {
-        throw std::length_error("string of " + std::to_string(length) +
-                                " characters exceeds the capacity of " +
-                                std::to_string(v->string_capacity));
-      }
-      std::memcpy(inst->data + v->offset, value[i], length + 1);
-    });
-    if (s != fmi2OK) return s;
-  }
-  return fmi2OK;
+  return set_values<std::string_view>(c, vr, nvr, value, function::set_other, value_type::string,
+                                      "fmi2SetString");
 }
 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {

@@ -23,9 +23,15 @@ std::string compute_guid(const fmu_definition& fmu) {
   std::string text =
       fmu.info.model_name + '|' + fmu.info.model_identifier + '|' + fmu.info.version + '|';
   for (const variable& v : fmu.table.variables()) {
-    text += v.name + '|' + std::to_string(v.value_reference) + '|' + to_string(v.type) + '|' +
-            to_string(v.causality_kind) + '|' + to_string(v.variability_kind) + '|' +
-            to_string(v.initial) + '|' + v.unit + '|';
+    text += v.name + '|' + std::to_string(v.value_reference) + '|';
+    text += to_string(v.type);
+    text += '|';
+    text += to_string(v.causality_kind);
+    text += '|';
+    text += to_string(v.variability_kind);
+    text += '|';
+    text += to_string(v.initial);
+    text += '|' + v.unit + '|';
     if (v.has_start()) text += format_start_value(v, fmu.table.defaults());
     text += '\n';
   }

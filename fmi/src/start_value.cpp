@@ -12,6 +12,7 @@ std::string format_start_value(const variable& v, const void* data) {
       return buffer;
     }
     case value_type::integer:
+    case value_type::enumeration:
       return std::to_string(read_value<int>(data, v.offset));
     case value_type::boolean:
       return read_value<bool>(data, v.offset) ? "true" : "false";

@@ -9,6 +9,7 @@
 
 #include "stride/cosim/error.hpp"
 #include "stride/fmi2/fmi2_api.h"
+#include "stride/fmi2/vocabulary.hpp"
 
 namespace stride::cosim {
 
@@ -40,22 +41,8 @@ struct fmi2_functions {
 #undef STRIDE_DECLARE_POINTER
 };
 
-const char* status_name(fmi2Status s) {
-  switch (s) {
-    case fmi2OK:
-      return "fmi2OK";
-    case fmi2Warning:
-      return "fmi2Warning";
-    case fmi2Discard:
-      return "fmi2Discard";
-    case fmi2Error:
-      return "fmi2Error";
-    case fmi2Fatal:
-      return "fmi2Fatal";
-    case fmi2Pending:
-      return "fmi2Pending";
-  }
-  return "unknown status";
+std::string status_name(fmi2Status s) {
+  return std::string(fmi2::to_string(static_cast<fmi2::status>(s)));
 }
 
 }  // namespace

@@ -15,70 +15,6 @@
 
 namespace stride::cosim {
 
-std::string_view to_string(variable_type t) noexcept {
-  switch (t) {
-    case variable_type::real:
-      return "Real";
-    case variable_type::integer:
-      return "Integer";
-    case variable_type::boolean:
-      return "Boolean";
-    case variable_type::string:
-      return "String";
-    case variable_type::enumeration:
-      return "Enumeration";
-  }
-  return "?";
-}
-
-std::string_view to_string(causality c) noexcept {
-  switch (c) {
-    case causality::parameter:
-      return "parameter";
-    case causality::calculated_parameter:
-      return "calculatedParameter";
-    case causality::input:
-      return "input";
-    case causality::output:
-      return "output";
-    case causality::local:
-      return "local";
-    case causality::independent:
-      return "independent";
-  }
-  return "?";
-}
-
-std::string_view to_string(variability v) noexcept {
-  switch (v) {
-    case variability::constant:
-      return "constant";
-    case variability::fixed:
-      return "fixed";
-    case variability::tunable:
-      return "tunable";
-    case variability::discrete:
-      return "discrete";
-    case variability::continuous:
-      return "continuous";
-  }
-  return "?";
-}
-
-std::string_view to_string(initial_kind i) noexcept {
-  switch (i) {
-    case initial_kind::none:
-      return "";
-    case initial_kind::exact:
-      return "exact";
-    case initial_kind::approx:
-      return "approx";
-    case initial_kind::calculated:
-      return "calculated";
-  }
-  return "?";
-}
-
 const variable_description* model_description::find(std::string_view name) const noexcept {
   for (const auto& v : variables) {
     if (v.name == name) return &v;
@@ -138,14 +74,13 @@ struct md_reader {
     return d;
   }
 
+  // An absent attribute takes `fallback`; a misspelt one is an error.
   template <class Enum>
   Enum parse_enum(const tinyxml2::XMLElement* e, const char* name, Enum fallback,
-                  std::initializer_list<Enum> values) const {
+                  std::optional<Enum> (*parse)(std::string_view) noexcept) const {
     const char* v = e->Attribute(name);
     if (v == nullptr) return fallback;
-    for (Enum candidate : values) {
-      if (to_string(candidate) == v) return candidate;
-    }
+    if (const auto value = parse(v)) return *value;
     fail(e->GetLineNum(), std::string("unknown ") + name + " \"" + v + "\"");
   }
 
@@ -270,26 +205,15 @@ struct md_reader {
                        "\" is not an unsigned integer");
     }
     v.description = attribute_or(sv, "description");
-    using C = stride::cosim::causality;
-    using V = stride::cosim::variability;
-    using I = initial_kind;
-    v.causality = parse_enum(
-        sv, "causality", C::local,
-        {C::parameter, C::calculated_parameter, C::input, C::output, C::local, C::independent});
-    v.variability = parse_enum(sv, "variability", V::continuous,
-                               {V::constant, V::fixed, V::tunable, V::discrete, V::continuous});
-    v.initial = parse_enum(sv, "initial", I::none, {I::exact, I::approx, I::calculated});
+    v.causality = parse_enum(sv, "causality", causality::local, fmi2::parse_causality);
+    v.variability = parse_enum(sv, "variability", variability::continuous, fmi2::parse_variability);
+    v.initial = parse_enum(sv, "initial", initial_kind::none, fmi2::parse_initial_kind);
 
     const tinyxml2::XMLElement* type_element = nullptr;
     for (auto* child = sv->FirstChildElement(); child != nullptr;
          child = child->NextSiblingElement()) {
       const std::string_view tag = child->Name();
-      std::optional<variable_type> t;
-      if (tag == "Real") t = variable_type::real;
-      if (tag == "Integer") t = variable_type::integer;
-      if (tag == "Boolean") t = variable_type::boolean;
-      if (tag == "String") t = variable_type::string;
-      if (tag == "Enumeration") t = variable_type::enumeration;
+      const std::optional<variable_type> t = fmi2::parse_value_type(tag);
       if (!t) continue;
       if (type_element != nullptr) fail(v.line, "variable \"" + v.name + "\" has two types");
       type_element = child;

@@ -10,13 +10,13 @@
 #include <algorithm>
 #include <bitset>
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "stride/gait/config_ini.hpp"
 #include "stride/gait/walking.hpp"
 #include "stride/sdk/fmu.hpp"
+#include "stride/sdk/resources.hpp"
 
 namespace stride::gait {
 namespace {
@@ -213,21 +213,11 @@ class gait_model : public sdk::model_base<gait_data> {
     data_.is_walking = is_running(data_.generator);
   }
 
-  // a relative name that does not exist as given is looked up in the FMU's resources
-  std::filesystem::path resolve_config_path() const {
-    std::filesystem::path path(data_.config_file.c_str());
-    if (path.is_relative() && !std::filesystem::exists(path) && !context_.resource_dir.empty()) {
-      const std::filesystem::path in_resources =
-          std::filesystem::path(context_.resource_dir) / path;
-      if (std::filesystem::exists(in_resources)) return in_resources;
-    }
-    return path;
-  }
-
   void load_config_file() {
     std::vector<std::string> warnings;
     const walking_params from_file =
-        read_walking_config(resolve_config_path(), data_.params, &warnings);
+        read_walking_config(sdk::find_resource(data_.config_file.c_str(), context_.resource_dir),
+                            data_.params, &warnings);
     for (const std::string& w : warnings) context_.log->warning(w);
     const auto table = walking_param_table();
     for (int i = 0; i < param_count; ++i) {

@@ -18,6 +18,7 @@
 #include "stride/robot/darwin.hpp"
 #include "stride/robot/robot_sim.hpp"
 #include "stride/sdk/fmu.hpp"
+#include "stride/sdk/resources.hpp"
 
 namespace stride::robot {
 namespace {
@@ -270,12 +271,7 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
     if (data_.urdf.empty()) {
       return (std::filesystem::path(context_.resource_dir) / "darwin-op.urdf").string();
     }
-    std::filesystem::path path(data_.urdf.c_str());
-    if (path.is_relative() && !std::filesystem::exists(path) && !context_.resource_dir.empty()) {
-      const auto in_resources = std::filesystem::path(context_.resource_dir) / path;
-      if (std::filesystem::exists(in_resources)) return in_resources.string();
-    }
-    return path.string();
+    return sdk::find_resource(data_.urdf.c_str(), context_.resource_dir).string();
   }
 
   darwin::plant_profile profile() const {

@@ -1,4 +1,5 @@
-// Archive rules of checklist §2.1, read with libzip without extracting anything.
+// Archive rules of docs/fmi-rules.md §2.1, read with libzip without extracting anything, and
+// the ties between the archive and its modelDescription.xml.
 #include <sys/stat.h>
 #include <zip.h>
 
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "model_description_check.hpp"
 #include "reporter.hpp"
 #include "stride/fmi_check/fmu_check.hpp"
 #include "xs_values.hpp"
@@ -258,5 +260,48 @@ std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
   out.append(check_model_description(xml, &listing));
   return out.take();
 }
+
+namespace detail {
+
+void check_archive_ties(reporter& out, const archive_listing& archive,
+                        std::string_view model_identifier) {
+  // FMI 3 platform tuples for platforms that have an FMI 2 name are not searched by FMI 2 tools
+  static const std::map<std::string_view, std::string_view> k_fmi3_tuples = {
+      {"x86_64-linux", "linux64"},
+      {"x86-linux", "linux32"},
+      {"x86_64-windows", "win64"},
+      {"x86-windows", "win32"},
+      {"x86_64-darwin", "darwin64"}};
+  std::set<std::string, std::less<>> reported;
+  for (const std::string& entry : archive) {
+    if (!entry.starts_with("binaries/")) continue;
+    const std::string_view rest = std::string_view(entry).substr(9);
+    const auto slash = rest.find('/');
+    if (slash == std::string_view::npos) continue;
+    const std::string_view dir = rest.substr(0, slash);
+    const auto it = k_fmi3_tuples.find(dir);
+    if (it != k_fmi3_tuples.end() && reported.emplace(dir).second) {
+      out.error("archive.platform_dir", "binaries/" + std::string(dir) +
+                                            "/ is an FMI 3 platform tuple; FMI 2 importers "
+                                            "only look in binaries/" +
+                                            std::string(it->second) + "/");
+    }
+  }
+  if (model_identifier.empty()) return;
+  const std::string binary = "binaries/linux64/" + std::string(model_identifier) + ".so";
+  if (std::find(archive.begin(), archive.end(), binary) == archive.end()) {
+    std::string hint;
+    for (const std::string& entry : archive) {
+      if (entry.starts_with("binaries/") && entry.ends_with(".so")) {
+        hint += (hint.empty() ? " (found: " : ", ") + entry;
+      }
+    }
+    if (!hint.empty()) hint += ")";
+    out.error("archive.binary", "the archive has no " + binary +
+                                    " (named after CoSimulation@modelIdentifier)" + hint);
+  }
+}
+
+}  // namespace detail
 
 }  // namespace stride::fmi_check

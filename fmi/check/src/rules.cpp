@@ -10,7 +10,7 @@ namespace stride::fmi_check {
 namespace {
 
 constexpr std::array k_rules{
-    // §2.1 archive
+    // docs/fmi-rules.md §2.1 archive
     rule_description{"archive.open",
                      "the file is a readable ZIP archive; every entry decompresses, CRC ok"},
     rule_description{"archive.extension", "the file name ends in .fmu (warning)"},
@@ -27,7 +27,7 @@ constexpr std::array k_rules{
     rule_description{"archive.binary", "binaries/linux64/<modelIdentifier>.so is present"},
     rule_description{"archive.platform_dir",
                      "no FMI 3 platform tuple (x86_64-linux, ...) for a platform FMI 2 names"},
-    // §2.2 modelDescription.xml
+    // docs/fmi-rules.md §2.2 modelDescription.xml
     rule_description{"xml.well_formed", "modelDescription.xml is well-formed XML"},
     rule_description{"schema.attribute", "no attribute the FMI 2.0 schema does not define"},
     rule_description{"root.element", "the root element is fmiModelDescription"},

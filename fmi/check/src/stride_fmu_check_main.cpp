@@ -16,7 +16,7 @@ constexpr std::string_view k_usage =
     "usage: stride-fmu-check [--list-rules] FILE.fmu|modelDescription.xml...\n"
     "\n"
     "Checks FMI 2.0 Co-Simulation FMUs against the archive and modelDescription.xml rules of\n"
-    "the Stride FMI checklist (no code of the FMU is loaded). Each finding is printed as\n"
+    "docs/fmi-rules.md (no code of the FMU is loaded). Each finding is printed as\n"
     "  FILE: error|warning: [rule] message\n"
     "A file ending in .xml is checked as a bare modelDescription.xml.\n"
     "\n"

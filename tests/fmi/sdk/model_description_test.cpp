@@ -34,8 +34,9 @@ TEST(model_description, every_variable_round_trips) {
     EXPECT_EQ(sv->Attribute("name"), vars[i].name);
     EXPECT_EQ(sv->UnsignedAttribute("valueReference"), vars[i].value_reference);
     EXPECT_TRUE(references.insert(vars[i].value_reference).second) << "duplicate reference";
-    EXPECT_STREQ(sv->Attribute("causality"), sdk::to_string(vars[i].causality_kind));
-    EXPECT_NE(sv->FirstChildElement(sdk::to_string(vars[i].type)), nullptr) << vars[i].name;
+    // the spellings are string literals, so data() is NUL-terminated
+    EXPECT_STREQ(sv->Attribute("causality"), sdk::to_string(vars[i].causality_kind).data());
+    EXPECT_NE(sv->FirstChildElement(sdk::to_string(vars[i].type).data()), nullptr) << vars[i].name;
   }
   EXPECT_EQ(i, vars.size());
 }

@@ -1,5 +1,6 @@
-// Basic vocabulary of the component SDK: FMI variable attributes, simulation time and the
-// fixed-capacity string used to keep String variables inside a trivially copyable data struct.
+// Basic vocabulary of the component SDK: FMI variable attributes (the shared stride::fmi2 ones),
+// simulation time and the fixed-capacity string used to keep String variables inside a
+// trivially copyable data struct.
 #pragma once
 
 #include <algorithm>
@@ -9,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+
+#include "stride/fmi2/vocabulary.hpp"
 
 namespace stride::sdk {
 
@@ -22,15 +25,12 @@ inline double to_seconds(time_ns t) {
   return static_cast<double>(t) / 1e9;
 }
 
-enum class value_type : std::uint8_t { real, integer, boolean, string };
-enum class causality : std::uint8_t { parameter, calculated_parameter, input, output, local };
-enum class variability : std::uint8_t { constant, fixed, tunable, discrete, continuous };
-enum class initial_kind : std::uint8_t { none, exact, approx, calculated };
-
-const char* to_string(value_type t);
-const char* to_string(causality c);
-const char* to_string(variability v);
-const char* to_string(initial_kind i);
+// The SDK never declares Enumeration or independent variables.
+using fmi2::causality;
+using fmi2::initial_kind;
+using fmi2::to_string;
+using fmi2::value_type;
+using fmi2::variability;
 
 /// A string with fixed capacity, so that String variables can live in a trivially copyable
 /// struct (FMU state = struct copy). Setting a longer value is an error, never a truncation.

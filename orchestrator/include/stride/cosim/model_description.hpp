@@ -13,25 +13,21 @@
 #include <string_view>
 #include <vector>
 
+#include "stride/fmi2/vocabulary.hpp"
+
 namespace stride::cosim {
 
 /// FMI value reference: the handle of a variable inside one component.
 using value_reference = std::uint32_t;
 
+// The FMI attribute vocabulary (stride/fmi2/vocabulary.hpp), under the names libstride uses.
 /// Variable base types. Enumeration values are exchanged as integers.
-enum class variable_type { real, integer, boolean, string, enumeration };
-/// FMI causality.
-enum class causality { parameter, calculated_parameter, input, output, local, independent };
-/// FMI variability.
-enum class variability { constant, fixed, tunable, discrete, continuous };
-/// FMI `initial` attribute; `none` when the attribute is absent.
-enum class initial_kind { none, exact, approx, calculated };
-
+using variable_type = fmi2::value_type;
+using fmi2::causality;
+using fmi2::initial_kind;  // `none` when the attribute is absent
+using fmi2::variability;
 /// FMI names of the enumerators ("real" → "Real", "calculated_parameter" → "calculatedParameter").
-std::string_view to_string(variable_type t) noexcept;
-std::string_view to_string(causality c) noexcept;
-std::string_view to_string(variability v) noexcept;
-std::string_view to_string(initial_kind i) noexcept;
+using fmi2::to_string;
 
 /// Integer and enumeration variables use the same value channel.
 constexpr variable_type exchange_type(variable_type t) noexcept {

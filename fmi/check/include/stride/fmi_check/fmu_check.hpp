@@ -1,6 +1,6 @@
-// Static checks of FMI 2.0 Co-Simulation FMUs against the project's acceptance checklist
-// (shared/reference/fmi2-checklist.md §2): archive layout, modelDescription.xml schema and
-// semantic rules, ModelStructure consistency.
+// Static checks of FMI 2.0 Co-Simulation FMUs against the project's FMI rules
+// (docs/fmi-rules.md §2): archive layout, modelDescription.xml schema and semantic rules,
+// ModelStructure consistency.
 #ifndef STRIDE_FMI_CHECK_FMU_CHECK_HPP
 #define STRIDE_FMI_CHECK_FMU_CHECK_HPP
 
@@ -49,7 +49,7 @@ struct rule_description {
   std::string_view summary;
 };
 
-/// Every rule id the checker can report, in the order of the checklist.
+/// Every rule id the checker can report, in the order of docs/fmi-rules.md.
 std::span<const rule_description> all_rules();
 
 }  // namespace stride::fmi_check

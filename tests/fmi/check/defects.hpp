@@ -1,0 +1,54 @@
+// Single defects of modelDescription.xml: edits applied to the valid data/valid_minimal.xml and
+// the rule that must report them. Each *_check_test.cpp lists the defects of its checker and
+// instantiates fmi_check_defect with them; model_description_check_test.cpp defines the test.
+#ifndef STRIDE_TESTS_FMI_CHECK_DEFECTS_HPP
+#define STRIDE_TESTS_FMI_CHECK_DEFECTS_HPP
+
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "stride/fmi_check/fmu_check.hpp"
+
+namespace stride::fmi_check::test {
+
+/// One defect: edits applied to the valid description, and the rule that must report it.
+/// An edit whose `from` starts with "re:" is an ECMAScript regex; otherwise it is literal text
+/// that must occur exactly once.
+struct defect {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> edits;
+  std::string rule;
+  finding::severity level = finding::severity::error;
+};
+
+void PrintTo(const defect& d, std::ostream* os);
+
+/// The text of data/valid_minimal.xml.
+const std::string& valid_xml();
+/// valid_xml() with the edits of `d` applied; an edit that does not apply fails the test.
+std::string apply(const defect& d);
+/// The findings one per line, as stride-fmu-check prints them.
+std::string describe(const std::vector<finding>& findings);
+bool has_rule(const std::vector<finding>& findings, std::string_view rule, finding::severity level);
+
+class fmi_check_defect : public testing::TestWithParam<defect> {};
+
+/// Test name suffix: the defect's name.
+std::string defect_name(const testing::TestParamInfo<defect>& info);
+
+// the defects of each checker, for the test that every rule id is known
+extern const std::vector<defect> k_model_description_defects;
+extern const std::vector<defect> k_root_defects;
+extern const std::vector<defect> k_type_definitions_defects;
+extern const std::vector<defect> k_variables_defects;
+extern const std::vector<defect> k_start_values_defects;
+extern const std::vector<defect> k_model_structure_defects;
+
+}  // namespace stride::fmi_check::test
+
+#endif  // STRIDE_TESTS_FMI_CHECK_DEFECTS_HPP
