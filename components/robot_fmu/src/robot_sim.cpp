@@ -80,16 +80,6 @@ void validate(const robot_config& c) {
   for (double q : c.initial_pose) require(std::isfinite(q), "initial_pose", "must be finite");
 }
 
-Eigen::Isometry3d joint_motion(const model_joint& j, double q) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  if (j.type == joint_type::prismatic) {
-    t.translation() = q * to_eigen(j.axis);
-  } else {
-    t.linear() = Eigen::AngleAxisd(q, to_eigen(j.axis)).toRotationMatrix();
-  }
-  return t;
-}
-
 // lowest world z of a shape placed at `t`
 double lowest_point(const collision_shape& s, const Eigen::Isometry3d& t) {
   const Eigen::Vector3d c = t.translation();
@@ -440,21 +430,11 @@ struct robot_sim::impl {
     world = nullptr;
   }
 
-  // world frame of every body (its root link frame) for root pose `root` and joint positions
-  // `q` by model joint (empty = zero pose)
+  // robot_model::forward_kinematics in Eigen frames
   std::vector<Eigen::Isometry3d> forward_kinematics(const Eigen::Isometry3d& root,
                                                     const std::vector<double>& q) const {
-    std::vector<Eigen::Isometry3d> frames(model.bodies.size(), Eigen::Isometry3d::Identity());
-    if (!model.fixed_base) frames[0] = root;
-    for (std::size_t j = 0; j < model.joints.size(); ++j) {
-      const model_joint& mj = model.joints[j];
-      const Eigen::Isometry3d parent = mj.parent_body >= 0
-                                           ? frames[static_cast<std::size_t>(mj.parent_body)]
-                                           : Eigen::Isometry3d::Identity();
-      const double qj = q.empty() ? 0.0 : q[j];
-      frames[static_cast<std::size_t>(mj.child_body)] =
-          parent * to_eigen(mj.origin) * joint_motion(mj, qj);
-    }
+    std::vector<Eigen::Isometry3d> frames;
+    for (const pose& p : model.forward_kinematics(to_pose(root), q)) frames.push_back(to_eigen(p));
     return frames;
   }
 
