@@ -119,11 +119,12 @@ TEST(darwin_op, a_sideways_push_rolls_it_and_the_gyro_follows_the_board_mounting
   sim.set_push(0.0, -4.0);  // push towards the right: the torso rolls right (about +x)
   sim.step(0.1);
   EXPECT_GT(o.gyro[0], 0.0);
-  // CM-730 mounting: counts = 512 - k * omega on x and y (fact sheet 1.4)
+  // CM-730 mounting: counts = 512 - k * omega on x and y (docs/robot-model.md §1.4)
   const double k = 512.0 / 27.925;
-  EXPECT_DOUBLE_EQ(o.gyro_rl, -k * o.gyro[0]);
-  EXPECT_DOUBLE_EQ(o.gyro_fb, -k * o.gyro[1]);
-  EXPECT_LT(o.gyro_rl, 0.0);
+  const darwin::gyro_counts board = darwin::board_gyro(o.gyro);
+  EXPECT_DOUBLE_EQ(board.rl, -k * o.gyro[0]);
+  EXPECT_DOUBLE_EQ(board.fb, -k * o.gyro[1]);
+  EXPECT_LT(board.rl, 0.0);
 }
 
 // a scripted run with changing targets and pushes; returns the final state image and outputs

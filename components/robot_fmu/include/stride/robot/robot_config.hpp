@@ -53,10 +53,8 @@ struct servo_config {
   bool clamp_to_limits = true;
 };
 
-/// IMU output scaling (fact sheet 1.4: CM-730 board, Webots lookup tables).
+/// IMU saturation (docs/robot-model.md §1.4: Webots lookup tables of the CM-730 board).
 struct imu_config {
-  /// Board counts per rad/s: 512 counts for 27.925 rad/s.
-  double gyro_counts_per_rad_s = 512.0 / 27.925;
   /// Saturation of the gyro, rad/s.
   double gyro_range = 27.925;
   /// Saturation of the accelerometer, m/s².
