@@ -127,6 +127,25 @@ TEST(darwin_op, a_sideways_push_rolls_it_and_the_gyro_follows_the_board_mounting
   EXPECT_LT(board.rl, 0.0);
 }
 
+TEST(darwin_op, board_gyro_counts_follow_the_cm730_mounting) {
+  // the board is turned 180 deg about z: positive roll and pitch rates read below the centre
+  const double k = 512.0 / 27.925;
+  const darwin::gyro_counts roll = darwin::board_gyro({1.0, 0.0, 3.0});
+  EXPECT_DOUBLE_EQ(roll.rl, -k);
+  EXPECT_EQ(roll.fb, 0.0);
+  const darwin::gyro_counts pitch = darwin::board_gyro({0.0, -0.5, 3.0});
+  EXPECT_DOUBLE_EQ(pitch.fb, 0.5 * k);
+  EXPECT_EQ(pitch.rl, 0.0);
+  // the full range, 27.925 rad/s, is 512 counts
+  EXPECT_DOUBLE_EQ(darwin::board_gyro({27.925, 27.925, 0.0}).rl, -512.0);
+  // the board's integer is rounded down (Webots truncates 512 + x towards zero)
+  EXPECT_EQ(darwin::board_integer(0.0), 0);
+  EXPECT_EQ(darwin::board_integer(2.9), 2);
+  EXPECT_EQ(darwin::board_integer(-0.1), -1);
+  EXPECT_EQ(darwin::board_integer(-3.0), -3);
+  EXPECT_EQ(darwin::board_integer(-511.5), -512);
+}
+
 // a scripted run with changing targets and pushes; returns the final state image and outputs
 std::vector<std::uint8_t> scripted_run(robot_sim& sim, int steps) {
   std::vector<double> targets(darwin::k_servo_count);
