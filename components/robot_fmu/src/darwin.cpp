@@ -1,4 +1,4 @@
-// DARwIn-OP profile (fact sheet sections 1.4, 4, 5).
+// DARwIn-OP profile (docs/robot-model.md §1.4, §4, §5).
 #include "stride/robot/darwin.hpp"
 
 #include <cmath>

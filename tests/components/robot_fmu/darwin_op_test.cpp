@@ -23,12 +23,12 @@ constexpr double k_deg = std::numbers::pi / 180.0;
 TEST(darwin_op, reset_puts_the_robot_in_the_walk_ready_pose) {
   robot_sim sim(darwin::default_config(k_darwin));
   const robot_outputs& o = sim.outputs();
-  // fact sheet 5.2: torso origin 0.317 m above the floor, 12.94 deg forward lean
+  // docs/robot-model.md §5.2: torso origin 0.317 m above the floor, 12.94 deg forward lean
   EXPECT_NEAR(o.base_position[2], darwin::k_walk_ready_torso_height, 0.002);
   EXPECT_NEAR(o.pitch, darwin::k_walk_ready_lean_deg * k_deg, 0.05 * k_deg);
   EXPECT_NEAR(o.roll, 0.0, 1e-9);
   EXPECT_NEAR(o.base_position[0], 0.0, 1e-12);
-  EXPECT_NEAR(o.com[2], 0.201, 0.002);  // whole-body CoM height, fact sheet 5.2
+  EXPECT_NEAR(o.com[2], 0.201, 0.002);  // whole-body CoM height, docs/robot-model.md §5.2
   const auto pose = darwin::walk_ready_pose();
   for (int i = 0; i < darwin::k_servo_count; ++i) {
     EXPECT_NEAR(o.joint_angles[static_cast<std::size_t>(i)], pose[static_cast<std::size_t>(i)],

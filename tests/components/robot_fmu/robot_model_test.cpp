@@ -43,16 +43,16 @@ const std::string k_inertial =
     "<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" "
     "iyz=\"0\" izz=\"0.01\"/></inertial>";
 
-TEST(robot_model, darwin_has_the_fact_sheet_structure) {
+TEST(robot_model, darwin_has_the_documented_structure) {
   const robot_model m = load_robot_model(k_darwin);
   EXPECT_EQ(m.name, "darwin-op");
   EXPECT_FALSE(m.fixed_base);
   ASSERT_EQ(m.bodies.size(), 21u);  // imu_link is merged into base_link
   ASSERT_EQ(m.joints.size(), 20u);
   EXPECT_EQ(m.servo_count(), 20);
-  EXPECT_NEAR(m.total_mass(), 2.9253, 5e-4);  // fact sheet 1.5
+  EXPECT_NEAR(m.total_mass(), 2.9253, 5e-4);  // docs/robot-model.md §1.5
   EXPECT_EQ(m.bodies[0].link, "base_link");
-  // servo IDs from the <servo> extension, fact sheet 1.3
+  // servo IDs from the <servo> extension, docs/robot-model.md §1.3
   const char* names[20] = {"r_sho_pitch", "l_sho_pitch", "r_sho_roll", "l_sho_roll", "r_el",
                            "l_el",        "r_hip_yaw",   "l_hip_yaw",  "r_hip_roll", "l_hip_roll",
                            "r_hip_pitch", "l_hip_pitch", "r_knee",     "l_knee",     "r_ank_pitch",

@@ -17,7 +17,8 @@ double servo_count_to_rad(double count);
 /// Inverse of servo_count_to_rad (not rounded).
 double rad_to_servo_count(double rad);
 
-/// ROBOTIS motion page 9 ("walkready") by servo ID − 1, servo counts (fact sheet 5.1).
+/// ROBOTIS motion page 9 ("walkready") by servo ID − 1, servo counts
+/// (docs/robot-model.md §5.1).
 inline constexpr std::array<int, k_servo_count> k_walk_ready_counts = {
     1498, 2518, 1845, 2248, 2381, 1712, 2048, 2048, 2052, 2044,
     1637, 2459, 2653, 1443, 2389, 1707, 2057, 2039, 2048, 2161};
@@ -25,7 +26,7 @@ inline constexpr std::array<int, k_servo_count> k_walk_ready_counts = {
 /// Page 9 in rad, by servo ID − 1.
 std::array<double, k_servo_count> walk_ready_pose();
 
-/// Fact sheet 5.2: torso origin height and forward lean in the walk-ready pose.
+/// docs/robot-model.md §5.2: torso origin height and forward lean in the walk-ready pose.
 inline constexpr double k_walk_ready_torso_height = 0.317;
 inline constexpr double k_walk_ready_lean_deg = 12.94;
 
