@@ -73,8 +73,9 @@ void bm_walk(benchmark::State& state) {
     state.ResumeTiming();
     for (int k = 0; k < static_cast<int>(k_sim_seconds / k_control_step); ++k) {
       gait::walking_feedback fb;
-      fb.gyro_fb = static_cast<int>(sim.outputs().gyro_fb);
-      fb.gyro_rl = static_cast<int>(sim.outputs().gyro_rl);
+      const darwin::gyro_counts gyro = darwin::board_gyro(sim.outputs().gyro);
+      fb.gyro_fb = static_cast<int>(gyro.fb);
+      fb.gyro_rl = static_cast<int>(gyro.rl);
       gen.set_command(s, 20.0, 0, 0, false);
       gen.tick(s, params, fb);
       for (int i = 0; i < 18; ++i) {

@@ -60,6 +60,15 @@ Eigen::Isometry3d to_isometry(const robot::pose& p) {
   return t;
 }
 
+robot::pose to_pose(const Eigen::Isometry3d& t) {
+  robot::pose p;
+  for (int i = 0; i < 3; ++i) {
+    p.position[static_cast<std::size_t>(i)] = t.translation()(i);
+    for (int j = 0; j < 3; ++j) p.rotation[static_cast<std::size_t>(3 * i + j)] = t.linear()(i, j);
+  }
+  return p;
+}
+
 }  // namespace
 
 cosim::system_structure make_standing_system() {
@@ -148,24 +157,15 @@ struct plant_simulator::impl {
   // world pose of every body from the root pose and the joint angles by servo ID
   std::vector<Eigen::Isometry3d> body_poses(const Eigen::Isometry3d& root,
                                             const std::vector<double>& angle_by_id) const {
-    std::vector<Eigen::Isometry3d> t(model.bodies.size(), Eigen::Isometry3d::Identity());
-    t[0] = root;
-    for (const robot::model_joint& j : model.joints) {
-      if (j.child_body < 0) continue;
-      const Eigen::Isometry3d parent = j.parent_body < 0
-                                           ? Eigen::Isometry3d::Identity()
-                                           : t[static_cast<std::size_t>(j.parent_body)];
-      double q = 0.0;
-      if (j.servo_id >= 1 && static_cast<std::size_t>(j.servo_id) <= angle_by_id.size())
-        q = angle_by_id[static_cast<std::size_t>(j.servo_id - 1)];
-      const Eigen::Vector3d axis(j.axis[0], j.axis[1], j.axis[2]);
-      Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
-      if (j.type == robot::joint_type::prismatic)
-        motion.translation() = q * axis;
-      else
-        motion.linear() = Eigen::AngleAxisd(q, axis.normalized()).toRotationMatrix();
-      t[static_cast<std::size_t>(j.child_body)] = parent * to_isometry(j.origin) * motion;
+    std::vector<double> q(model.joints.size(), 0.0);
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const int id = model.joints[j].servo_id;
+      if (id >= 1 && static_cast<std::size_t>(id) <= angle_by_id.size())
+        q[j] = angle_by_id[static_cast<std::size_t>(id - 1)];
     }
+    std::vector<Eigen::Isometry3d> t;
+    for (const robot::pose& p : model.forward_kinematics(to_pose(root), q))
+      t.push_back(to_isometry(p));
     return t;
   }
 

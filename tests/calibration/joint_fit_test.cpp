@@ -243,7 +243,7 @@ TEST_P(calibration_ik, an_outlier_servo_in_a_posture_plan_does_not_move_the_fit)
   EXPECT_THAT(format_report(robust), HasSubstr("P5   13 r_knee"));
 }
 
-TEST(calibration_joint_fit, walk_ready_pose_of_the_fact_sheet_is_the_framework_default_stance) {
+TEST(calibration_joint_fit, walk_ready_pose_is_the_framework_default_stance) {
   const joint_target target = read_joint_target(k_data / "walk_ready.csv");
   const gait::walking_params defaults;
 

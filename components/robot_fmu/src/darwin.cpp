@@ -1,5 +1,7 @@
-// DARwIn-OP profile (fact sheet sections 1.4, 4, 5).
+// DARwIn-OP profile (docs/robot-model.md §1.4, §4, §5).
 #include "stride/robot/darwin.hpp"
+
+#include <cmath>
 
 namespace stride::robot::darwin {
 
@@ -13,6 +15,14 @@ double servo_count_to_rad(double count) {
 
 double rad_to_servo_count(double rad) {
   return 2048.0 + rad / k_rad_per_count;
+}
+
+gyro_counts board_gyro(const std::array<double, 3>& gyro) {
+  return {-k_gyro_counts_per_rad_s * gyro[1], -k_gyro_counts_per_rad_s * gyro[0]};
+}
+
+int board_integer(double counts_minus_centre) {
+  return static_cast<int>(std::floor(counts_minus_centre));
 }
 
 std::array<double, k_servo_count> walk_ready_pose() {

@@ -1,4 +1,4 @@
-// Private helpers: conversions between the plain public frame types and Eigen.
+// Private helpers: conversions between the plain public frame types and Eigen, joint motion.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -34,6 +34,17 @@ inline pose to_pose(const Eigen::Isometry3d& t) {
   const Eigen::Matrix3d& r = t.linear();
   p.rotation = {r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)};
   return p;
+}
+
+// child body frame relative to the joint frame at joint position q
+inline Eigen::Isometry3d joint_motion(const model_joint& j, double q) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  if (j.type == joint_type::prismatic) {
+    t.translation() = q * to_eigen(j.axis);
+  } else {
+    t.linear() = Eigen::AngleAxisd(q, to_eigen(j.axis)).toRotationMatrix();
+  }
+  return t;
 }
 
 }  // namespace stride::robot

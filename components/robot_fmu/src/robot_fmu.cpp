@@ -7,7 +7,6 @@
 // Outputs  joint_angle[1..20], gyro_fb, gyro_rl (board counts − 512, for gait.fmu), gyro[1..3],
 //          acc[1..3], base_x/y/z, roll/pitch/yaw, com_x/y/z, foot forces, fallen
 // Step     any h: the plant runs every whole physics step that fits and carries the remainder.
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -117,11 +116,6 @@ struct robot_data {
   }
 };
 static_assert(k_plant_parameter_count <= 32);
-
-// the board reports integer counts; Webots truncates the raw value (512 + x) towards zero
-int board_counts(double counts_minus_centre) {
-  return static_cast<int>(std::floor(counts_minus_centre));
-}
 
 class robot_model_fmu : public sdk::model_base<robot_data> {
  public:
@@ -304,8 +298,9 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
       const auto index = static_cast<std::size_t>(i);
       data_.joint_angle[i] = index < o.joint_angles.size() ? o.joint_angles[index] : 0.0;
     }
-    data_.gyro_fb = board_counts(o.gyro_fb);
-    data_.gyro_rl = board_counts(o.gyro_rl);
+    const darwin::gyro_counts board = darwin::board_gyro(o.gyro);
+    data_.gyro_fb = darwin::board_integer(board.fb);
+    data_.gyro_rl = darwin::board_integer(board.rl);
     for (int i = 0; i < 3; ++i) {
       data_.gyro[i] = o.gyro[static_cast<std::size_t>(i)];
       data_.acc[i] = o.acc[static_cast<std::size_t>(i)];

@@ -397,6 +397,31 @@ double robot_model::total_mass() const {
   return m;
 }
 
+std::vector<pose> robot_model::forward_kinematics(const pose& root,
+                                                  std::span<const double> q) const {
+  if (!q.empty() && q.size() != joints.size()) {
+    throw std::invalid_argument(source + ": forward_kinematics: " + std::to_string(q.size()) +
+                                " joint positions for " + std::to_string(joints.size()) +
+                                " joints");
+  }
+  // joints are in tree order: a parent's frame is known before its children's
+  std::vector<Eigen::Isometry3d> frames(bodies.size(), Eigen::Isometry3d::Identity());
+  if (!fixed_base && !frames.empty()) frames[0] = to_eigen(root);
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const model_joint& mj = joints[j];
+    const Eigen::Isometry3d parent = mj.parent_body >= 0
+                                         ? frames[static_cast<std::size_t>(mj.parent_body)]
+                                         : Eigen::Isometry3d::Identity();
+    const double qj = q.empty() ? 0.0 : q[j];
+    frames[static_cast<std::size_t>(mj.child_body)] =
+        parent * to_eigen(mj.origin) * joint_motion(mj, qj);
+  }
+  std::vector<pose> out;
+  out.reserve(frames.size());
+  for (const Eigen::Isometry3d& f : frames) out.push_back(to_pose(f));
+  return out;
+}
+
 void weld_joint(robot_model& model, int joint, double q) {
   if (joint < 0 || joint >= static_cast<int>(model.joints.size())) {
     throw model_error(model.source + ": weld_joint: no joint index " + std::to_string(joint));
@@ -409,13 +434,7 @@ void weld_joint(robot_model& model, int joint, double q) {
                       "be welded");
   }
   // child body frame in the parent body frame at position q
-  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
-  if (mj.type == joint_type::prismatic) {
-    motion.translation() = q * to_eigen(mj.axis);
-  } else {
-    motion.linear() = Eigen::AngleAxisd(q, to_eigen(mj.axis)).toRotationMatrix();
-  }
-  const Eigen::Isometry3d t = to_eigen(mj.origin) * motion;
+  const Eigen::Isometry3d t = to_eigen(mj.origin) * joint_motion(mj, q);
 
   rigid_body& pb = model.bodies[static_cast<std::size_t>(parent)];
   const rigid_body& cb = model.bodies[static_cast<std::size_t>(child)];

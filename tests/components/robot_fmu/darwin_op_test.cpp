@@ -23,12 +23,12 @@ constexpr double k_deg = std::numbers::pi / 180.0;
 TEST(darwin_op, reset_puts_the_robot_in_the_walk_ready_pose) {
   robot_sim sim(darwin::default_config(k_darwin));
   const robot_outputs& o = sim.outputs();
-  // fact sheet 5.2: torso origin 0.317 m above the floor, 12.94 deg forward lean
+  // docs/robot-model.md §5.2: torso origin 0.317 m above the floor, 12.94 deg forward lean
   EXPECT_NEAR(o.base_position[2], darwin::k_walk_ready_torso_height, 0.002);
   EXPECT_NEAR(o.pitch, darwin::k_walk_ready_lean_deg * k_deg, 0.05 * k_deg);
   EXPECT_NEAR(o.roll, 0.0, 1e-9);
   EXPECT_NEAR(o.base_position[0], 0.0, 1e-12);
-  EXPECT_NEAR(o.com[2], 0.201, 0.002);  // whole-body CoM height, fact sheet 5.2
+  EXPECT_NEAR(o.com[2], 0.201, 0.002);  // whole-body CoM height, docs/robot-model.md §5.2
   const auto pose = darwin::walk_ready_pose();
   for (int i = 0; i < darwin::k_servo_count; ++i) {
     EXPECT_NEAR(o.joint_angles[static_cast<std::size_t>(i)], pose[static_cast<std::size_t>(i)],
@@ -119,11 +119,31 @@ TEST(darwin_op, a_sideways_push_rolls_it_and_the_gyro_follows_the_board_mounting
   sim.set_push(0.0, -4.0);  // push towards the right: the torso rolls right (about +x)
   sim.step(0.1);
   EXPECT_GT(o.gyro[0], 0.0);
-  // CM-730 mounting: counts = 512 - k * omega on x and y (fact sheet 1.4)
+  // CM-730 mounting: counts = 512 - k * omega on x and y (docs/robot-model.md §1.4)
   const double k = 512.0 / 27.925;
-  EXPECT_DOUBLE_EQ(o.gyro_rl, -k * o.gyro[0]);
-  EXPECT_DOUBLE_EQ(o.gyro_fb, -k * o.gyro[1]);
-  EXPECT_LT(o.gyro_rl, 0.0);
+  const darwin::gyro_counts board = darwin::board_gyro(o.gyro);
+  EXPECT_DOUBLE_EQ(board.rl, -k * o.gyro[0]);
+  EXPECT_DOUBLE_EQ(board.fb, -k * o.gyro[1]);
+  EXPECT_LT(board.rl, 0.0);
+}
+
+TEST(darwin_op, board_gyro_counts_follow_the_cm730_mounting) {
+  // the board is turned 180 deg about z: positive roll and pitch rates read below the centre
+  const double k = 512.0 / 27.925;
+  const darwin::gyro_counts roll = darwin::board_gyro({1.0, 0.0, 3.0});
+  EXPECT_DOUBLE_EQ(roll.rl, -k);
+  EXPECT_EQ(roll.fb, 0.0);
+  const darwin::gyro_counts pitch = darwin::board_gyro({0.0, -0.5, 3.0});
+  EXPECT_DOUBLE_EQ(pitch.fb, 0.5 * k);
+  EXPECT_EQ(pitch.rl, 0.0);
+  // the full range, 27.925 rad/s, is 512 counts
+  EXPECT_DOUBLE_EQ(darwin::board_gyro({27.925, 27.925, 0.0}).rl, -512.0);
+  // the board's integer is rounded down (Webots truncates 512 + x towards zero)
+  EXPECT_EQ(darwin::board_integer(0.0), 0);
+  EXPECT_EQ(darwin::board_integer(2.9), 2);
+  EXPECT_EQ(darwin::board_integer(-0.1), -1);
+  EXPECT_EQ(darwin::board_integer(-3.0), -3);
+  EXPECT_EQ(darwin::board_integer(-511.5), -512);
 }
 
 // a scripted run with changing targets and pushes; returns the final state image and outputs

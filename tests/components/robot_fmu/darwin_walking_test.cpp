@@ -40,8 +40,9 @@ walk_result walk(const gait::walking_params& params, double x_move, double durat
   while (o.time - t0 < duration - 1e-9 && !o.fallen) {
     gait::walking_feedback fb;
     fb.balance_on = true;
-    fb.gyro_fb = static_cast<int>(gyro_sign * o.gyro_fb);
-    fb.gyro_rl = static_cast<int>(gyro_sign * o.gyro_rl);
+    const darwin::gyro_counts gyro = darwin::board_gyro(o.gyro);
+    fb.gyro_fb = static_cast<int>(gyro_sign * gyro.fb);
+    fb.gyro_rl = static_cast<int>(gyro_sign * gyro.rl);
     gen.set_command(s, x_move, 0, 0, false);
     gen.tick(s, params, fb);
     for (int i = 0; i < 18; ++i) {
@@ -95,7 +96,7 @@ TEST(darwin_walking, the_webots_profile_walks_the_default_gait_and_falls_with_th
 }
 
 TEST(darwin_walking, reversed_gyro_sign_destabilises_the_gait) {
-  // the FB gyro feeds knees and ankle pitch; with the sign of robot_outputs::gyro_fb the loop
+  // the FB gyro feeds knees and ankle pitch; with the sign of darwin::board_gyro the loop
   // is stabilising, with the opposite sign the robot goes down within seconds
   const walk_result r = walk(webots_params(), 20.0, 20.0, -1.0);
   std::printf("[ figure ] reversed gyro sign fell after %.2f s\n", r.time);

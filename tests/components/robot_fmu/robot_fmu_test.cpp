@@ -38,7 +38,7 @@ TEST(robot_fmu, stands_in_the_walk_ready_pose) {
   double t = 0;
   run(f, c, t, 3.0);
   EXPECT_FALSE(f.boolean(c, "fallen"));
-  EXPECT_NEAR(f.real(c, "base_z"), 0.317, 0.005);  // fact sheet: torso origin 0.317 m
+  EXPECT_NEAR(f.real(c, "base_z"), 0.317, 0.005);  // docs/robot-model.md §5.2: torso origin 0.317 m
   EXPECT_NEAR(f.real(c, "pitch") * 180 / M_PI, 12.94, 1.0);
   const double weight = f.real(c, "left_foot_force") + f.real(c, "right_foot_force");
   EXPECT_NEAR(weight, 2.925 * 9.81, 3.0);  // the feet carry the robot

@@ -2,9 +2,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <cmath>
+#include <numbers>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "stride/robot/darwin.hpp"
 #include "stride/robot/robot_model.hpp"
 
 namespace {
@@ -38,16 +43,16 @@ const std::string k_inertial =
     "<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" "
     "iyz=\"0\" izz=\"0.01\"/></inertial>";
 
-TEST(robot_model, darwin_has_the_fact_sheet_structure) {
+TEST(robot_model, darwin_has_the_documented_structure) {
   const robot_model m = load_robot_model(k_darwin);
   EXPECT_EQ(m.name, "darwin-op");
   EXPECT_FALSE(m.fixed_base);
   ASSERT_EQ(m.bodies.size(), 21u);  // imu_link is merged into base_link
   ASSERT_EQ(m.joints.size(), 20u);
   EXPECT_EQ(m.servo_count(), 20);
-  EXPECT_NEAR(m.total_mass(), 2.9253, 5e-4);  // fact sheet 1.5
+  EXPECT_NEAR(m.total_mass(), 2.9253, 5e-4);  // docs/robot-model.md §1.5
   EXPECT_EQ(m.bodies[0].link, "base_link");
-  // servo IDs from the <servo> extension, fact sheet 1.3
+  // servo IDs from the <servo> extension, docs/robot-model.md §1.3
   const char* names[20] = {"r_sho_pitch", "l_sho_pitch", "r_sho_roll", "l_sho_roll", "r_el",
                            "l_el",        "r_hip_yaw",   "l_hip_yaw",  "r_hip_roll", "l_hip_roll",
                            "r_hip_pitch", "l_hip_pitch", "r_knee",     "l_knee",     "r_ank_pitch",
@@ -128,6 +133,121 @@ TEST(robot_model, weld_joint_merges_the_child_body) {
     EXPECT_LT(j.parent_body, j.child_body);
     EXPECT_LT(j.child_body, static_cast<int>(m.bodies.size()));
   }
+}
+
+// base --yaw about z at (0, 0, 0.1)--> upper --pitch about y at (0.5, 0, 0)--> lower
+//      --slide along x at (0.3, 0, 0)--> tip
+std::string chain(const std::string& root) {
+  auto link = [](const std::string& name) {
+    return "<link name=\"" + name + "\">" + (name == "world" ? "" : k_inertial) + "</link>";
+  };
+  return robot(link(root) + link("upper") + link("lower") + link("tip") +
+               "<joint name=\"yaw\" type=\"continuous\"><parent link=\"" + root +
+               "\"/><child link=\"upper\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/></joint>"
+               "<joint name=\"pitch\" type=\"continuous\"><parent link=\"upper\"/><child "
+               "link=\"lower\"/><origin xyz=\"0.5 0 0\"/><axis xyz=\"0 1 0\"/></joint>"
+               "<joint name=\"slide\" type=\"prismatic\"><parent link=\"lower\"/><child "
+               "link=\"tip\"/><origin xyz=\"0.3 0 0\"/><axis xyz=\"1 0 0\"/><limit lower=\"0\" "
+               "upper=\"0.2\" effort=\"1\" velocity=\"1\"/></joint>");
+}
+
+// the frame of `link`'s body
+stride::robot::pose frame_of(const robot_model& m, const std::vector<stride::robot::pose>& frames,
+                             const std::string& link) {
+  const int l = m.find_link(link);
+  EXPECT_GE(l, 0) << link;
+  return frames[static_cast<std::size_t>(m.links[static_cast<std::size_t>(l)].body)];
+}
+
+void expect_pose(const stride::robot::pose& p, const stride::robot::vec3& position,
+                 const stride::robot::mat3& rotation) {
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(p.position[i], position[i], 1e-12) << i;
+  for (std::size_t i = 0; i < 9; ++i) EXPECT_NEAR(p.rotation[i], rotation[i], 1e-12) << i;
+}
+
+TEST(robot_model, forward_kinematics_of_a_chain_matches_the_hand_computed_frames) {
+  const robot_model m = parse_robot_model(chain("base"), "chain.urdf");
+  ASSERT_EQ(m.joints.size(), 3u);
+  // root at (1, 2, 3) turned 90 deg about z; yaw +90 deg, pitch -90 deg (lower's x points up),
+  // slide 0.1 m
+  stride::robot::pose root;
+  root.position = {1.0, 2.0, 3.0};
+  root.rotation = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  const std::vector<double> q = {std::numbers::pi / 2, -std::numbers::pi / 2, 0.1};
+  const auto frames = m.forward_kinematics(root, q);
+  ASSERT_EQ(frames.size(), 4u);
+  expect_pose(frame_of(m, frames, "base"), {1, 2, 3}, root.rotation);
+  // upper: 0.1 up, turned 180 deg about z in all
+  expect_pose(frame_of(m, frames, "upper"), {1, 2, 3.1}, {-1, 0, 0, 0, -1, 0, 0, 0, 1});
+  // lower: 0.5 along upper's x = world -x; x axis up, y axis = world -y, z axis = world +x
+  expect_pose(frame_of(m, frames, "lower"), {0.5, 2, 3.1}, {0, 0, 1, 0, -1, 0, 1, 0, 0});
+  // tip: 0.3 + 0.1 along lower's x = up
+  expect_pose(frame_of(m, frames, "tip"), {0.5, 2, 3.5}, {0, 0, 1, 0, -1, 0, 1, 0, 0});
+
+  // empty q: the zero pose, everything along the root's axes
+  const auto zero = m.forward_kinematics(root, {});
+  expect_pose(frame_of(m, zero, "tip"), {1, 2.8, 3.1}, root.rotation);
+  const std::vector<double> two = {0.0, 0.0};
+  EXPECT_THROW((void)m.forward_kinematics(root, two), std::invalid_argument);
+}
+
+TEST(robot_model, forward_kinematics_of_a_fixed_base_ignores_the_root_pose) {
+  const robot_model m = parse_robot_model(chain("world"), "chain.urdf");
+  ASSERT_TRUE(m.fixed_base);
+  stride::robot::pose root;
+  root.position = {1.0, 2.0, 3.0};
+  const std::vector<double> q = {std::numbers::pi / 2, 0.0, 0.0};
+  const auto frames = m.forward_kinematics(root, q);
+  ASSERT_EQ(frames.size(), 3u);
+  expect_pose(frame_of(m, frames, "upper"), {0, 0, 0.1}, {0, -1, 0, 1, 0, 0, 0, 0, 1});
+  expect_pose(frame_of(m, frames, "tip"), {0, 0.8, 0.1}, {0, -1, 0, 1, 0, 0, 0, 0, 1});
+}
+
+TEST(robot_model, walk_ready_stance_has_the_documented_torso_height_and_lean) {
+  // docs/robot-model.md §5.2: with the soles level on the floor, the torso origin is 0.317 m
+  // above them and leans 12.94 deg forward
+  const robot_model m = load_robot_model(k_darwin);
+  const auto by_servo = stride::robot::darwin::walk_ready_pose();
+  std::vector<double> q(m.joints.size(), 0.0);
+  for (std::size_t j = 0; j < q.size(); ++j) {
+    q[j] = by_servo[static_cast<std::size_t>(m.joints[j].servo_id - 1)];
+  }
+  const int foot_link = m.find_link("l_ank_roll_link");
+  ASSERT_GE(foot_link, 0);
+  const auto& foot_in_body = m.links[static_cast<std::size_t>(foot_link)].in_body;
+  auto rotation = [](const stride::robot::pose& p) {
+    Eigen::Matrix3d r;
+    r << p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3], p.rotation[4], p.rotation[5],
+        p.rotation[6], p.rotation[7], p.rotation[8];
+    return r;
+  };
+  // torso upright first: the left foot's orientation in the torso frame
+  const auto upright = m.forward_kinematics({}, q);
+  const Eigen::Matrix3d foot =
+      rotation(frame_of(m, upright, "l_ank_roll_link")) * rotation(foot_in_body);
+  // turn the torso so that the foot is level
+  stride::robot::pose root;
+  const Eigen::Matrix3d r = foot.transpose();
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) root.rotation[static_cast<std::size_t>(3 * i + k)] = r(i, k);
+  }
+  const auto level = m.forward_kinematics(root, q);
+  // the sole: the bottom face of the foot box, here level
+  const stride::robot::pose foot_body = frame_of(m, level, "l_ank_roll_link");
+  const auto& box =
+      m.bodies[static_cast<std::size_t>(m.links[static_cast<std::size_t>(foot_link)].body)]
+          .shapes.front();
+  ASSERT_EQ(box.type, shape_type::box);
+  const Eigen::Vector3d centre =
+      rotation(foot_body) *
+          Eigen::Vector3d(box.origin.position[0], box.origin.position[1], box.origin.position[2]) +
+      Eigen::Vector3d(foot_body.position[0], foot_body.position[1], foot_body.position[2]);
+  const double sole_z = centre.z() - 0.5 * box.size[2];
+  EXPECT_NEAR(-sole_z, stride::robot::darwin::k_walk_ready_torso_height, 0.0005);
+  // lean: pitch of the torso (R = Rz·Ry·Rx, pitch = asin(−r20)), + forward
+  const double lean_deg = std::asin(-r(2, 0)) * 180.0 / std::numbers::pi;
+  EXPECT_NEAR(lean_deg, stride::robot::darwin::k_walk_ready_lean_deg, 0.01);
+  EXPECT_NEAR(std::atan2(r(2, 1), r(2, 2)), 0.0, 0.02);  // hardly any roll
 }
 
 TEST(robot_model, missing_file_is_named) {

@@ -1,4 +1,4 @@
-// robot_sim on small test models: pendulum period, servo limits, joint signs, step rule, errors.
+// robot_sim on small test models: pendulum period, joint signs, step rule, errors.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -58,30 +58,6 @@ TEST(robot_sim, pendulum_swings_with_the_compound_pendulum_period) {
   EXPECT_FALSE(sim.outputs().fallen);  // fixed-base models never fall
 }
 
-TEST(robot_sim, servo_holds_within_its_torque_limit_and_sags_beyond_it) {
-  // the arm needs 4.9 N·m to stay horizontal
-  robot_config strong = config_for("arm.urdf");
-  strong.servo.torque_limit = 10.0;
-  robot_sim a(strong);
-  ASSERT_EQ(a.servo_count(), 3);
-  const std::vector<double> level = {0.0, 0.0, 0.0};
-  a.set_joint_targets(level);
-  a.step(2.0);
-  EXPECT_NEAR(a.outputs().joint_angles[0], 0.0, 1e-3);
-
-  robot_config weak = config_for("arm.urdf");  // default 2.5 N·m
-  weak.servo.damping = 0.5;                    // settle the swing within the test
-  robot_sim b(weak);
-  b.set_joint_targets(level);
-  b.step(4.0);
-  // static balance: motor at its limit against gravity, m·g·r·cos(q) = 2.5 N·m
-  double moment = 0.0;  // Σ m·x of the arm bodies, kg·m
-  moment += b.model().bodies[0].mass * b.model().bodies[0].com[0];
-  moment += b.model().bodies[1].mass * (0.5 + b.model().bodies[1].com[0]);
-  const double expected = -std::acos(2.5 / (moment * 9.81));
-  EXPECT_NEAR(b.outputs().joint_angles[0], expected, 0.03);
-}
-
 TEST(robot_sim, positive_joint_positions_follow_the_urdf_axis) {
   robot_config c = config_for("arm.urdf");
   c.servo.torque_limit = 10.0;
@@ -103,20 +79,6 @@ TEST(robot_sim, positive_joint_positions_follow_the_urdf_axis) {
   EXPECT_NEAR(sim.outputs().joint_angles[0], 2.0, 0.01);
   EXPECT_NEAR(sim.outputs().joint_angles[2], 0.1, 2e-3);
   EXPECT_NE(com_x0, sim.outputs().com[0]);
-}
-
-TEST(robot_sim, servo_velocity_is_limited) {
-  robot_config c = config_for("arm.urdf");
-  c.servo.torque_limit = 50.0;
-  c.servo.max_velocity = 1.0;
-  c.servo.max_acceleration = 0.0;
-  robot_sim sim(c);
-  const std::vector<double> targets = {1.5, 0.0, 0.0};
-  sim.set_joint_targets(targets);
-  sim.step(0.5);
-  // 0.5 s at 1 rad/s
-  EXPECT_NEAR(sim.outputs().joint_angles[0], 0.5, 0.02);
-  EXPECT_LE(std::abs(sim.outputs().joint_velocities[0]), 1.0 + 1e-6);
 }
 
 TEST(robot_sim, step_runs_whole_physics_steps_and_carries_the_remainder) {

@@ -17,7 +17,8 @@ double servo_count_to_rad(double count);
 /// Inverse of servo_count_to_rad (not rounded).
 double rad_to_servo_count(double rad);
 
-/// ROBOTIS motion page 9 ("walkready") by servo ID − 1, servo counts (fact sheet 5.1).
+/// ROBOTIS motion page 9 ("walkready") by servo ID − 1, servo counts
+/// (docs/robot-model.md §5.1).
 inline constexpr std::array<int, k_servo_count> k_walk_ready_counts = {
     1498, 2518, 1845, 2248, 2381, 1712, 2048, 2048, 2052, 2044,
     1637, 2459, 2653, 1443, 2389, 1707, 2057, 2039, 2048, 2161};
@@ -25,9 +26,29 @@ inline constexpr std::array<int, k_servo_count> k_walk_ready_counts = {
 /// Page 9 in rad, by servo ID − 1.
 std::array<double, k_servo_count> walk_ready_pose();
 
-/// Fact sheet 5.2: torso origin height and forward lean in the walk-ready pose.
+/// docs/robot-model.md §5.2: torso origin height and forward lean in the walk-ready pose.
 inline constexpr double k_walk_ready_torso_height = 0.317;
 inline constexpr double k_walk_ready_lean_deg = 12.94;
+
+/// CM-730 gyro counts per rad/s: 512 counts for 27.925 rad/s (Webots' lookup table).
+inline constexpr double k_gyro_counts_per_rad_s = 512.0 / 27.925;
+
+/// The gyro as the CM-730 board reads it, counts minus the 512 centre, not yet made integer.
+struct gyro_counts {
+  /// front/back: gyro[1] − 512, what the gait's balance loop reads as FB
+  double fb = 0.0;
+  /// right/left: gyro[0] − 512, what it reads as RL
+  double rl = 0.0;
+};
+
+/// Board reading of `gyro` (robot_outputs::gyro, rad/s in the IMU frame). The board is mounted
+/// rotated 180° about z (docs/robot-model.md §1.4): rl = −k·ω_x, fb = −k·ω_y,
+/// k = k_gyro_counts_per_rad_s.
+gyro_counts board_gyro(const std::array<double, 3>& gyro);
+
+/// The integer the board reports for a count minus the centre: Webots truncates the raw value
+/// 512 + x towards zero, i.e. floor(x) on the board's range.
+int board_integer(double counts_minus_centre);
 
 /// Physics step of the DARwIn profiles, s: Webots' basicTimeStep in the DARwIn-OP worlds.
 inline constexpr double k_physics_step = 0.016;

@@ -14,7 +14,8 @@ enum class physics_solver {
   quick_step,
 };
 
-/// Robot-floor and robot-robot contact surface (defaults: Webots defaults, fact sheet 4.3).
+/// Robot-floor and robot-robot contact surface (defaults: Webots defaults, docs/robot-model.md
+/// §4.3).
 struct contact_config {
   /// Coulomb friction coefficient (ODE dContactApprox1: friction scales with the normal force).
   double mu = 1.0;
@@ -29,9 +30,9 @@ struct contact_config {
   bool self_collision = true;
 };
 
-/// Position servo modelled like a Webots RotationalMotor (fact sheet 4.2): per physics step
-/// v = p_gain·(target − q), |v| ≤ max_velocity, |v − v_prev| ≤ max_acceleration·dt, applied as
-/// the ODE joint motor velocity with force limit max(torque_limit, static_friction).
+/// Position servo modelled like a Webots RotationalMotor (docs/robot-model.md §4.2): per physics
+/// step v = p_gain·(target − q), |v| ≤ max_velocity, |v − v_prev| ≤ max_acceleration·dt,
+/// applied as the ODE joint motor velocity with force limit max(torque_limit, static_friction).
 /// Linear joints use the same numbers in SI linear units.
 struct servo_config {
   double p_gain = 10.0;
@@ -53,10 +54,8 @@ struct servo_config {
   bool clamp_to_limits = true;
 };
 
-/// IMU output scaling (fact sheet 1.4: CM-730 board, Webots lookup tables).
+/// IMU saturation (docs/robot-model.md §1.4: Webots lookup tables of the CM-730 board).
 struct imu_config {
-  /// Board counts per rad/s: 512 counts for 27.925 rad/s.
-  double gyro_counts_per_rad_s = 512.0 / 27.925;
   /// Saturation of the gyro, rad/s.
   double gyro_range = 27.925;
   /// Saturation of the accelerometer, m/s².

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -103,6 +104,12 @@ struct robot_model {
   [[nodiscard]] int find_link(const std::string& name) const;
   /// Sum of body masses.
   [[nodiscard]] double total_mass() const;
+  /// World frame of every body (the frame of its root link), by body index: bodies[0] at `root`
+  /// (ignored by a fixed-base model, whose first joints hang from the world origin), every child
+  /// at parent frame · joint origin · joint motion. `q`: joint positions by model joint, rad (m
+  /// for prismatic joints); empty = all 0. Throws std::invalid_argument for another size.
+  [[nodiscard]] std::vector<pose> forward_kinematics(const pose& root,
+                                                     std::span<const double> q) const;
 };
 
 /// Replaces movable joint `joint` by a weld at joint position `q`: its child body (mass, inertia,

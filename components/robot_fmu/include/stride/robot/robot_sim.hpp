@@ -21,13 +21,9 @@ struct robot_outputs {
   /// Joint positions by servo ID − 1, rad (m for prismatic); IDs without a joint read 0.
   std::vector<double> joint_angles;
   std::vector<double> joint_velocities;
-  /// Angular velocity of the IMU link in its own frame (x forward, y left, z up), rad/s.
+  /// Angular velocity of the IMU link in its own frame (x forward, y left, z up), rad/s,
+  /// saturated at imu_config::gyro_range (darwin::board_gyro converts it to CM-730 counts).
   std::array<double, 3> gyro{0.0, 0.0, 0.0};
-  /// DARwIn CM-730 gyro counts minus the 512 centre, as the gait balance loop reads them:
-  /// rl = gyro[0] − 512 = −k·ω_x, fb = gyro[1] − 512 = −k·ω_y (board mounted rotated 180° about
-  /// z), k = imu_config::gyro_counts_per_rad_s; not truncated. See models/darwin-op/README.md.
-  double gyro_fb = 0.0;
-  double gyro_rl = 0.0;
   /// Specific force (acceleration minus gravity) at the IMU in the IMU frame, m/s²; reads
   /// (0, 0, +9.81) for an upright robot at rest.
   std::array<double, 3> acc{0.0, 0.0, 0.0};
