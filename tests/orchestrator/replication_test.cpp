@@ -91,7 +91,9 @@ TEST(cosim_replication, a_member_parameter_is_set_in_every_copy_and_one_copy_is_
   s.set("robot.gain", "7");
   const system_structure x = expand_replicas(s);
   for (const auto& c : x.components) {
-    if (c.name.starts_with("robot[")) EXPECT_EQ(c.parameters.at(0).value, "7") << c.name;
+    if (c.name.starts_with("robot[")) {
+      EXPECT_EQ(c.parameters.at(0).value, "7") << c.name;
+    }
   }
   try {
     s.set("robot[2].gain", "7");
