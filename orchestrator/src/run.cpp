@@ -111,17 +111,17 @@ std::string manifest_json(const manifest_data& m) {
     << ",\n";
   j << "  \"wall_time_s\": " << json_number(r.wall_seconds) << ",\n";
   j << "  \"real_time_factor\": " << json_number(r.real_time_factor) << ",\n";
-  // seeds: any parameter called seed or *_seed that the system sets
-  std::string seeds;
+  // every value the system sets, so that a run can be told apart from another (seeds included)
+  j << "  \"parameters\": {";
+  bool first_parameter = true;
   for (const auto& c : s.components) {
     for (const auto& p : c.parameters) {
-      if (p.variable == "seed" || p.variable.ends_with("_seed")) {
-        seeds += (seeds.empty() ? "" : ", ") + json_string(c.name + "." + p.variable) + ": " +
-                 json_string(p.value);
-      }
+      j << (first_parameter ? "\n    " : ",\n    ") << json_string(c.name + "." + p.variable)
+        << ": " << json_string(p.value);
+      first_parameter = false;
     }
   }
-  j << "  \"seed\": " << (seeds.empty() ? "null" : "{" + seeds + "}") << ",\n";
+  j << (first_parameter ? "},\n" : "\n  },\n");
   j << "  \"results\": " << json_string(r.results_file.filename().string()) << ",\n";
   j << "  \"components\": [";
   if (m.built) {
@@ -215,18 +215,9 @@ run_report run_system(system_structure system, const run_options& options) {
                            "' uses ${resume}, so nothing would continue from " +
                            options.resume_dir.string());
   }
-  if (resuming && system.record.enabled) {
-    // keep what the interrupted run recorded
-    const fs::path first = system.record.file;
-    fs::path file = first;
-    for (int n = 1; fs::exists(report.output_dir / file); ++n) {
-      file = first.parent_path() /
-             (first.stem().string() + "-resumed" + (n > 1 ? "-" + std::to_string(n) : "") +
-              first.extension().string());
-    }
-    system.record.file = file.string();
-  }
+  if (options.record_file) system.record.file = *options.record_file;
 
+  report.system = system;
   built_system built = build_system(system, options.build);
   fs::create_directories(report.output_dir);
   write_file(report.output_dir / "system.xml", to_xml(as_written));

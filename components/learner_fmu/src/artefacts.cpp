@@ -1,13 +1,11 @@
 #include "stride/learner/artefacts.hpp"
 
-#include "stride/gait/config_ini.hpp"
-#include "stride/gait/walking_params.hpp"
-
 #include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -217,17 +215,17 @@ artefact_writer::artefact_writer(fs::path dir, const state_grid& grid, bool log_
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) throw learner_error("cannot create output_dir " + dir_.string() + ": " + ec.message());
-  episodes_ = open("episodes.csv",
+  episodes_ = open(run_files::episodes,
                    "episode,steps,falls,reward,sum_abs_dv," + csv_header(grid, "start_") +
                        ",rl_step,time,complete",
                    resume_sizes);
   if (log_steps) {
-    steps_ = open("steps.csv",
+    steps_ = open(run_files::steps,
                   "rl_step,episode,step," + csv_header(grid, "") +
                       ",action,fell,distance,duration,speed,reward,delta,V",
                   resume_sizes);
   }
-  paths_ = open("paths.csv", "episode,rl_step,time,x,y,fallen", resume_sizes);
+  paths_ = open(run_files::paths, "episode,rl_step,time,x,y,fallen", resume_sizes);
 }
 
 artefact_writer::~artefact_writer() {
@@ -374,75 +372,163 @@ best_summary summarize_best(const state_grid& grid, const value_table& v, std::s
   return b;
 }
 
-void check_grid_against_gait(const state_grid& grid, std::string_view what) {
-  for (const auto& d : grid.dimensions()) {
-    const gait::param_info* p = gait::find_param(d.name);
-    if (p == nullptr) continue;
-    for (double v : {d.value(0), d.value(d.count - 1)}) {
-      try {
-        gait::check_param_value(*p, v);
-      } catch (const std::invalid_argument& e) {
-        throw learner_error(std::string(what) + " dimension " + d.name + ": " + e.what());
-      }
-    }
+namespace run_files {
+
+std::string snapshot(std::int64_t rl_step) {
+  return "v_snapshot_" + std::to_string(rl_step) + ".csv";
+}
+
+std::int64_t snapshot_step(const std::string& name) {
+  static constexpr std::string_view prefix = "v_snapshot_", suffix = ".csv";
+  if (!name.starts_with(prefix) || !name.ends_with(suffix)) return -1;
+  const std::string_view digits(name.data() + prefix.size(),
+                                name.size() - prefix.size() - suffix.size());
+  std::int64_t n = -1;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+  return ec == std::errc() && end == digits.data() + digits.size() ? n : -1;
+}
+
+}  // namespace run_files
+
+namespace {
+
+void write_whole_file(const fs::path& file, const std::string& text) {
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  if (f == nullptr) throw learner_error("cannot write " + file.string() + ": " + errno_text());
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !ok) {
+    throw learner_error("cannot write " + file.string() + ": " + errno_text());
   }
 }
 
-std::vector<std::pair<std::string, double>> parse_config_overrides(std::string_view text,
-                                                                   std::string_view what) {
-  std::vector<std::pair<std::string, double>> out;
-  for (const std::string& item : split_list(text)) {
-    if (item.empty()) continue;
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) {
-      throw learner_error(std::string(what) + ": '" + item + "' is not key=value");
-    }
-    std::string key = item.substr(0, eq);
-    while (!key.empty() && key.back() == ' ') key.pop_back();
-    const gait::param_info* p = gait::find_param(key);
-    if (p == nullptr) {
-      throw learner_error(std::string(what) + ": '" + key + "' is not a [Walking Config] key");
-    }
-    const double v = parse_number(item.substr(eq + 1), std::string(what) + " " + key);
-    try {
-      gait::check_param_value(*p, v);
-    } catch (const std::invalid_argument& e) {
-      throw learner_error(std::string(what) + ": " + e.what());
-    }
-    out.emplace_back(p->key, v);
-  }
-  return out;
+std::string read_whole_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw learner_error("cannot read " + file.string());
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
-void write_best_config(const fs::path& out, const fs::path& base,
-                       const std::vector<std::pair<std::string, double>>& overrides,
-                       const state_grid& grid, const std::vector<double>& values) {
-  try {
-    gait::walking_params params{};
-    gait::ini_document doc;
-    const bool has_base = !base.empty();
-    if (has_base) {
-      doc = gait::ini_document::load(base);
-      params = gait::read_walking_config(doc, params, nullptr);
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream ss(line);
+  for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+protocol protocol_named(const std::string& name, const fs::path& file) {
+  const auto p = parse_protocol(name);
+  if (!p) throw learner_error(file.string() + ": unknown protocol '" + name + "'");
+  return *p;
+}
+
+}  // namespace
+
+void write_best(const fs::path& dir, const best_summary& best, protocol rules,
+                std::int64_t rl_steps, std::int64_t episodes, std::int64_t falls) {
+  write_whole_file(dir / run_files::best, best.text + "protocol: " + std::string(to_string(rules)) +
+                                              "\nRL steps: " + std::to_string(rl_steps) +
+                                              ", episodes: " + std::to_string(episodes) +
+                                              ", falls: " + std::to_string(falls) + "\n");
+}
+
+best_record read_best(const fs::path& file) {
+  best_record b;
+  b.text = read_whole_file(file);
+  std::istringstream in(b.text);
+  bool counts = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.starts_with("protocol: ")) b.rules = protocol_named(line.substr(10), file);
+    long long steps = 0, episodes = 0, falls = 0;
+    if (std::sscanf(line.c_str(), "RL steps: %lld, episodes: %lld, falls: %lld", &steps, &episodes,
+                    &falls) == 3) {
+      b.rl_steps = steps;
+      b.episodes = episodes;
+      b.falls = falls;
+      counts = true;
     }
-    for (const auto& [key, v] : overrides) gait::set_param(params, *gait::find_param(key), v);
-    for (std::size_t d = 0; d < grid.dimension_count() && d < values.size(); ++d) {
-      const gait::param_info* p = gait::find_param(grid.dimensions()[d].name);
-      if (p != nullptr) gait::set_param(params, *p, values[d]);
-    }
-    if (has_base) {
-      gait::update_walking_config(doc, params);
-      doc.save(out);
-    } else {
-      std::ofstream f(out, std::ios::binary);
-      f << gait::make_walking_config_text(params);
-      if (!f) throw learner_error("cannot write " + out.string());
-    }
-  } catch (const gait::config_error& e) {
-    throw learner_error(std::string("base_config: ") + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw learner_error(std::string("config.ini: ") + e.what());
   }
+  if (!counts) throw learner_error(file.string() + ": no 'RL steps: ...' line");
+  return b;
+}
+
+void write_evaluation(const fs::path& dir, const evaluation_result& r) {
+  std::string header, row;
+  for (const auto& [name, value] : r.point) {
+    header += name + ",";
+    row += format_number(value) + ",";
+  }
+  write_whole_file(
+      dir / run_files::evaluation,
+      header +
+          "windows,falls,distance,measured_time,mean_speed,sim_time,physical_speed,protocol\n" +
+          row + std::to_string(r.windows) + "," + std::to_string(r.falls) + "," +
+          format_number(r.distance) + "," + format_number(r.measured_time) + "," +
+          format_number(r.mean_speed) + "," + format_number(r.sim_time) + "," +
+          format_number(r.physical_speed) + "," + std::string(to_string(r.rules)) + "\n");
+}
+
+evaluation_result read_evaluation(const fs::path& file) {
+  std::istringstream in(read_whole_file(file));
+  std::string header_line, row_line;
+  std::getline(in, header_line);
+  std::getline(in, row_line);
+  const auto header = split_csv_line(header_line);
+  const auto row = split_csv_line(row_line);
+  const auto at = [&](const char* name) -> const std::string& {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end() || static_cast<std::size_t>(it - header.begin()) >= row.size()) {
+      throw learner_error(file.string() + ": no column '" + name + "'");
+    }
+    return row[static_cast<std::size_t>(it - header.begin())];
+  };
+  const auto number = [&](const char* name) { return parse_number(at(name), file.string()); };
+  evaluation_result r;
+  const auto first = std::find(header.begin(), header.end(), "windows");
+  for (auto it = header.begin(); it != first; ++it) {
+    const std::size_t i = static_cast<std::size_t>(it - header.begin());
+    r.point.emplace_back(*it, parse_number(i < row.size() ? row[i] : "", file.string()));
+  }
+  r.windows = static_cast<std::int64_t>(number("windows"));
+  r.falls = static_cast<std::int64_t>(number("falls"));
+  r.distance = number("distance");
+  r.measured_time = number("measured_time");
+  r.mean_speed = number("mean_speed");
+  r.sim_time = number("sim_time");
+  r.physical_speed = number("physical_speed");
+  r.rules = protocol_named(at("protocol"), file);
+  return r;
+}
+
+int csv_columns::column(const std::string& name) const {
+  const auto it = std::find(header.begin(), header.end(), name);
+  return it == header.end() ? -1 : static_cast<int>(it - header.begin());
+}
+
+csv_columns read_csv_log(const fs::path& file) {
+  std::istringstream in(read_whole_file(file));
+  csv_columns t;
+  bool first = true;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    const auto cells = split_csv_line(line);
+    if (first) {
+      t.header = cells;
+      first = false;
+      continue;
+    }
+    if (cells.size() != t.header.size()) continue;  // a row cut by a kill
+    std::vector<double> values;
+    for (const auto& c : cells) {
+      double v = std::nan("");
+      std::from_chars(c.data(), c.data() + c.size(), v);
+      values.push_back(v);
+    }
+    t.rows.push_back(std::move(values));
+  }
+  return t;
 }
 
 }  // namespace stride::learner

@@ -22,7 +22,6 @@
 // the data struct; the value table (any size) and the traces live in the model, and
 // save_state/restore_state append them to the data bytes.
 #include <chrono>
-#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <memory>
@@ -69,20 +68,19 @@ struct learner_data {
   int seed = 1;
   int total_steps = 300000;
   double step_timeout = 60.0;
+  double stand_time = 0.0;
   bool balance = true;
   sdk::text output_dir{};
   sdk::text resume{};
   sdk::text snapshot_steps{};
-  sdk::text base_config{};
-  sdk::text config_overrides{};
   int path_every = 1;
   bool log_steps = true;
   bool log_progress = true;
   double progress_interval = 5.0;
-  int kill_at_step = 0;
   // outputs
   double value[k_outputs] = {};
   int reset_robot = 0;
+  bool walking = true;
   bool balance_on = false;
   int episode = 0;
   int rl_step = 0;
@@ -243,6 +241,11 @@ class learner_model : public sdk::model_base<learner_data> {
         .unit("s")
         .min(1e-3)
         .describe("Error when a settle or measurement phase lasts longer (no footsteps)");
+    t.add("stand_time", &d::stand_time)
+        .parameter()
+        .unit("s")
+        .min(0)
+        .describe("Evaluate mode: the robot stands this long before it walks (walking output)");
     t.add("balance", &d::balance)
         .parameter()
         .describe("Gyro balance on (balance_on is false anyway for the tick after a restart)");
@@ -255,12 +258,6 @@ class learner_model : public sdk::model_base<learner_data> {
     t.add("snapshot_steps", &d::snapshot_steps)
         .parameter()
         .describe("RL steps after which v_snapshot_<N>.csv is written, ',' between");
-    t.add("base_config", &d::base_config)
-        .parameter()
-        .describe("config.ini the best state is applied to ('' = framework defaults)");
-    t.add("config_overrides", &d::config_overrides)
-        .parameter()
-        .describe("key=value gait settings applied to base_config first (e.g. Webots gains)");
     t.add("path_every", &d::path_every)
         .parameter()
         .min(0)
@@ -274,10 +271,6 @@ class learner_model : public sdk::model_base<learner_data> {
         .unit("s")
         .min(0)
         .describe("At most one progress line per this many wall seconds");
-    t.add("kill_at_step", &d::kill_at_step)
-        .parameter()
-        .min(0)
-        .describe("Test hook: SIGKILL the process after this RL step (ignored when resuming)");
 
     t.add("value", &d::value)
         .output()
@@ -286,6 +279,9 @@ class learner_model : public sdk::model_base<learner_data> {
         .output()
         .discrete()
         .describe("Restart counter: wire to robot.reset and gait.restart");
+    t.add("walking", &d::walking)
+        .output()
+        .describe("Wire to gait.walking: false while the robot stands (stand_time)");
     t.add("balance_on", &d::balance_on)
         .output()
         .describe("Wire to gait.balance_on: false on the tick after a restart");
@@ -330,7 +326,6 @@ class learner_model : public sdk::model_base<learner_data> {
   void enter_initialization() override {
     config_ = make_config();
     snapshots_ = parse_step_list(data_.snapshot_steps.view(), "snapshot_steps");
-    overrides_ = parse_config_overrides(data_.config_overrides.view(), "config_overrides");
     const std::string out = std::string(data_.output_dir.view());
     const std::string resume = std::string(data_.resume.view());
     for (const auto& [name, text] : {std::pair{"output_dir", out}, std::pair{"resume", resume}}) {
@@ -346,7 +341,7 @@ class learner_model : public sdk::model_base<learner_data> {
     std::optional<checkpoint> ck;
     if (!resume.empty()) {
       fs::path file(resume);
-      if (fs::is_directory(file)) file /= "checkpoint.bin";
+      if (fs::is_directory(file)) file /= run_files::checkpoint;
       if (fs::exists(file)) {
         ck = read_checkpoint(file);
         restore_checkpoint(*ck, file);
@@ -359,7 +354,6 @@ class learner_model : public sdk::model_base<learner_data> {
                               " (killed before the first episode ended?): starting afresh");
       }
     }
-    resuming_ = ck.has_value();
     if (!out.empty()) {
       writer_ = artefact_writer(fs::path(out), config_.grid, data_.log_steps,
                                 ck ? &ck->file_sizes : nullptr);
@@ -481,20 +475,9 @@ class learner_model : public sdk::model_base<learner_data> {
     try {
       learner_config c;
       c.grid = state_grid::parse(data_.grid.view(), "grid");
-      check_grid_against_gait(c.grid, "grid");
       c.mode = static_cast<learner_mode>(data_.mode);
       c.rules = parse_protocol_parameter(data_.protocol.view());
       c.eval_point = parse_number_list(data_.eval_point.view(), "eval_point");
-      if (c.mode == learner_mode::evaluate) {
-        // an evaluation point need not lie on the grid, but within the gait's ranges
-        std::string as_grid;
-        for (std::size_t i = 0; i < c.eval_point.size() && i < c.grid.dimension_count(); ++i) {
-          const std::string v = format_number(c.eval_point[i]);
-          as_grid +=
-              (as_grid.empty() ? "" : ",") + c.grid.dimensions()[i].name + ":" + v + ":" + v + ":1";
-        }
-        if (!as_grid.empty()) check_grid_against_gait(state_grid::parse(as_grid), "eval_point");
-      }
       c.td = {data_.alpha, data_.gamma, data_.lambda};
       c.epsilon = data_.epsilon;
       c.steps_per_episode = data_.steps_per_episode;
@@ -506,6 +489,7 @@ class learner_model : public sdk::model_base<learner_data> {
       c.seed = static_cast<std::uint64_t>(static_cast<std::int64_t>(data_.seed));
       c.total_steps = data_.total_steps;
       c.step_timeout = data_.step_timeout;
+      c.stand_time = data_.stand_time;
       c.balance = data_.balance;
       c.validate();
       return c;
@@ -527,11 +511,7 @@ class learner_model : public sdk::model_base<learner_data> {
   void on_step(const step_record& s) {
     if (config_.mode == learner_mode::learn &&
         std::binary_search(snapshots_.begin(), snapshots_.end(), s.rl_step) && writer_.active()) {
-      write_value_table(writer_.dir() / ("v_snapshot_" + std::to_string(s.rl_step) + ".csv"),
-                        config_.grid, values_);
-    }
-    if (data_.kill_at_step > 0 && !resuming_ && s.rl_step == data_.kill_at_step) {
-      std::raise(SIGKILL);  // the test hook: die like a killed run, nothing flushed
+      write_value_table(writer_.dir() / run_files::snapshot(s.rl_step), config_.grid, values_);
     }
   }
 
@@ -545,7 +525,7 @@ class learner_model : public sdk::model_base<learner_data> {
       ck.values = values_.values();
       ck.traces = traces_.entries;
       ck.file_sizes = writer_.flush();
-      write_checkpoint(writer_.dir() / "checkpoint.bin", ck);
+      write_checkpoint(writer_.dir() / run_files::checkpoint, ck);
     }
     log_progress(e, finished);
     if (!finished) session_->begin_episode();
@@ -590,14 +570,9 @@ class learner_model : public sdk::model_base<learner_data> {
     if (config_.mode == learner_mode::learn) {
       const best_summary b = summarize_best(config_.grid, values_);
       if (writer_.active()) {
-        write_value_table(writer_.dir() / "v_table.csv", config_.grid, values_);
-        write_best_config(writer_.dir() / "config.ini", fs::path(data_.base_config.c_str()),
-                          overrides_, config_.grid, b.best_values);
-        write_text(writer_.dir() / "best.txt",
-                   b.text + "protocol: " + std::string(to_string(config_.rules)) +
-                       "\nRL steps: " + std::to_string(data_.session.rl_step) +
-                       ", episodes: " + std::to_string(data_.session.episode) +
-                       ", falls: " + std::to_string(data_.session.total_falls) + "\n");
+        write_value_table(writer_.dir() / run_files::value_table, config_.grid, values_);
+        write_best(writer_.dir(), b, config_.rules, data_.session.rl_step, data_.session.episode,
+                   data_.session.total_falls);
       }
       if (data_.log_progress) {
         std::string text = b.text;
@@ -609,20 +584,19 @@ class learner_model : public sdk::model_base<learner_data> {
       const double speed = session_->mean_speed();
       const double physical = st.eval_time > 0 ? 100.0 * st.eval_distance / st.eval_time : 0.0;
       if (writer_.active()) {
-        std::string header, row;
+        evaluation_result r;
         for (std::size_t d = 0; d < config_.grid.dimension_count(); ++d) {
-          header += config_.grid.dimensions()[d].name + ",";
-          row += format_number(config_.eval_point[d]) + ",";
+          r.point.emplace_back(config_.grid.dimensions()[d].name, config_.eval_point[d]);
         }
-        write_text(
-            writer_.dir() / "evaluation.csv",
-            header +
-                "windows,falls,distance,measured_time,mean_speed,sim_time,physical_speed,"
-                "protocol\n" +
-                row + std::to_string(st.rl_step) + "," + std::to_string(st.total_falls) + "," +
-                format_number(st.eval_distance) + "," + format_number(st.eval_time) + "," +
-                format_number(speed) + "," + format_number(static_cast<double>(st.clock_ns) / 1e9) +
-                "," + format_number(physical) + "," + std::string(to_string(config_.rules)) + "\n");
+        r.windows = st.rl_step;
+        r.falls = st.total_falls;
+        r.distance = st.eval_distance;
+        r.measured_time = st.eval_time;
+        r.mean_speed = speed;
+        r.sim_time = static_cast<double>(st.clock_ns) / 1e9;
+        r.physical_speed = physical;
+        r.rules = config_.rules;
+        write_evaluation(writer_.dir(), r);
       }
       if (data_.log_progress) {
         char buf[240];
@@ -639,19 +613,13 @@ class learner_model : public sdk::model_base<learner_data> {
     if (writer_.active()) writer_.flush();
   }
 
-  static void write_text(const fs::path& file, const std::string& text) {
-    std::FILE* f = std::fopen(file.c_str(), "wb");
-    if (f == nullptr) throw sdk::model_error("cannot write " + file.string());
-    std::fwrite(text.data(), 1, text.size(), f);
-    std::fclose(f);
-  }
-
   void publish() {
     if (!data_.started || !session_) return;
     const session_state& st = data_.session;
     const std::vector<double> v = session_->current_values();
     for (std::size_t i = 0; i < k_outputs; ++i) data_.value[i] = i < v.size() ? v[i] : 0.0;
     data_.reset_robot = st.restarts;
+    data_.walking = session_->walking();
     data_.balance_on = config_.balance && st.balance_gate;
     data_.episode = static_cast<int>(st.episode);
     data_.rl_step = static_cast<int>(st.rl_step);
@@ -677,8 +645,6 @@ class learner_model : public sdk::model_base<learner_data> {
   std::unique_ptr<session> session_;
   artefact_writer writer_;
   std::vector<std::int64_t> snapshots_;
-  std::vector<std::pair<std::string, double>> overrides_;
-  bool resuming_ = false;
   std::chrono::steady_clock::time_point wall_start_{}, last_log_{};
   std::int64_t steps_at_start_ = 0;
 };

@@ -63,6 +63,7 @@ void learner_config::validate() const {
   require(finite(initial_value), "initial_value", "must be finite");
   require(total_steps >= 0, "total_steps", "must be >= 0");
   require(finite(step_timeout) && step_timeout > 0, "step_timeout", "must be > 0");
+  require(finite(stand_time) && stand_time >= 0, "stand_time", "must be >= 0");
   require(finite(reward.speed_cap) && reward.speed_cap >= 0, "speed_cap", "must be >= 0");
   require(finite(reward.capped_reward), "capped_reward", "must be finite");
   if (rules == protocol::authors_code) {
@@ -107,6 +108,7 @@ std::string learner_config::canonical() const {
   add("capped_reward", format_number(reward.capped_reward));
   add("initial_value", format_number(initial_value));
   add("seed", std::to_string(seed));
+  add("stand_time", format_number(stand_time));
   // total_steps is left out on purpose: a resumed run may be given more steps
   return s;
 }
@@ -197,11 +199,21 @@ std::vector<double> session::current_values() const {
   return cfg_.grid.values(static_cast<std::size_t>(st_.state));
 }
 
+bool session::walking() const {
+  return cfg_.mode != learner_mode::evaluate ||
+         static_cast<double>(st_.clock_ns) >= cfg_.stand_time * 1e9;
+}
+
 advance_report session::advance(const plant_inputs& in, std::int64_t h_ns) {
   advance_report r;
   st_.clock_ns += h_ns;
   const walk_phase ph = phase();
   if (ph == walk_phase::finished || ph == walk_phase::episode_ended) return r;
+  if (!walking()) {
+    // standing before an evaluation: nothing to measure, no footsteps to wait for
+    st_.phase_start_ns = st_.clock_ns;
+    return r;
+  }
 
   const bool after_restart = st_.restart_pending;
   st_.restart_pending = false;

@@ -13,6 +13,7 @@
 #include "../../orchestrator/process.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/run.hpp"
+#include "stride/study/gait_link.hpp"
 
 namespace stride::cosim {
 namespace {
@@ -49,6 +50,8 @@ TEST(learner_closed_loop, a_few_rl_steps_with_the_real_fmus) {
   EXPECT_EQ(count_lines(read_all(out / "episodes.csv")), 3u);  // header + 2 episodes
   EXPECT_EQ(count_lines(read_all(out / "v_table.csv")), 456u);
   EXPECT_THAT(read_all(out / "best.txt"), HasSubstr("protocol: paper\nRL steps: 6, episodes: 2"));
+  // the study writes the best state into the gait's config.ini
+  EXPECT_EQ(study::write_best_configs(report.system), std::vector<fs::path>{out / "config.ini"});
   EXPECT_THAT(read_all(out / "config.ini"), HasSubstr("balance_hip_roll_gain=0.000000"));
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
   EXPECT_THAT(read_all(out / "system.xml"), HasSubstr("${output_dir}"));  // kept for --resume
@@ -104,10 +107,10 @@ class learner_resume : public ::testing::Test {
   test::process_result stride(const std::string& args) {
     return test::run_command("'" + std::string(STRIDE_CLI) + "' " + args, scratch.path());
   }
-  // short episodes (3 RL steps of 1 footstep) so a kill at step 11 is mid-episode 4
+  // short episodes (3 RL steps of 1 footstep): a checkpoint every few dozen milliseconds
   const std::string sets =
-      " --set learner.total_steps=20 --set learner.steps_per_episode=3"
-      " --set learner.footsteps_per_step=1 --set learner.seed=5 --quiet --no-plots";
+      " --set learner.total_steps=400 --set learner.steps_per_episode=3"
+      " --set learner.footsteps_per_step=1 --set learner.seed=5 --quiet --no-plots --threads 1";
 };
 
 TEST_F(learner_resume, a_killed_and_resumed_run_equals_an_uninterrupted_one) {
@@ -115,8 +118,14 @@ TEST_F(learner_resume, a_killed_and_resumed_run_equals_an_uninterrupted_one) {
   auto r = stride("run -o " + test::quoted(full) + sets);
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
-  r = stride("run -o " + test::quoted(killed) + sets + " --set learner.kill_at_step=11");
-  ASSERT_NE(r.exit_code, 0) << "the test hook did not kill the run";
+  // SIGKILL soon after the first checkpoint, wherever the run then is
+  const std::string cli = "'" + std::string(STRIDE_CLI) + "'";
+  const std::string checkpoint = test::quoted(killed / "checkpoint.bin");
+  r = test::run_command(cli + " run -o " + test::quoted(killed) + sets +
+                            " & pid=$!; for i in $(seq 3000); do [ -f " + checkpoint +
+                            " ] && break; sleep 0.002; done; sleep 0.05; kill -9 $pid; wait $pid",
+                        scratch.path());
+  ASSERT_EQ(r.exit_code, 128 + 9) << "the run was not killed: " << r.err;
   ASSERT_TRUE(fs::exists(killed / "checkpoint.bin"));
   ASSERT_FALSE(fs::exists(killed / "v_table.csv"));
   // the logs hold rows written after the checkpoint, which the resume must drop
@@ -154,7 +163,7 @@ TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
   std::ofstream(run / "v_snapshot_2.csv") << "period_time,swing_right_left,V\n"
                                              "450,15,0\n465,15,1\n450,17,0\n465,17,2\n";
   std::ofstream(run / "best.txt") << "best state: period_time = 465, swing_right_left = 17\n"
-                                     "RL steps: 4, episodes: 2, falls: 0\n";
+                                     "protocol: paper\nRL steps: 4, episodes: 2, falls: 0\n";
   std::ofstream(run / "episodes.csv")
       << "episode,steps,falls,reward,sum_abs_dv,start_period_time,start_swing_right_left,"
          "rl_step,time,complete\n1,2,0,10,5,450,15,2,3.1,1\n2,2,1,-390,40,465,17,4,6.0,1\n";
@@ -163,7 +172,7 @@ TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
   for (const char* p : {"P1", "P2"}) {
     std::ofstream(run / p / "evaluation.csv")
         << "period_time,swing_right_left,windows,falls,distance,measured_time,mean_speed,"
-           "sim_time\n600,20,10,1,1.2,12,10,15\n";
+           "sim_time,physical_speed,protocol\n600,20,10,1,1.2,12,10,15,10,paper\n";
     std::ofstream(run / p / "paths.csv") << "episode,rl_step,time,x,y,fallen\n1,0,0.3,0.01,0,0\n"
                                             "1,1,0.6,0.05,0.01,0\n";
   }

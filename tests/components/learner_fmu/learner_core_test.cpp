@@ -88,22 +88,6 @@ TEST(learner_grid, bad_grid_strings_are_errors_naming_the_fault) {
               HasSubstr("empty dimension"));
 }
 
-TEST(learner_grid, out_of_range_gait_parameters_are_errors_naming_the_parameter) {
-  EXPECT_THAT(error_of([] { check_grid_against_gait(state_grid::parse("period_time:0:900:15")); }),
-              HasSubstr("grid dimension period_time: walking parameter 'period_time' = 0"));
-  EXPECT_THAT(
-      error_of([] { check_grid_against_gait(state_grid::parse("swing_right_left:-4:30:2")); }),
-      HasSubstr("swing_right_left"));
-  EXPECT_THAT(error_of([] { check_grid_against_gait(state_grid::parse("dsp_ratio:0.5:1:0.5")); }),
-              HasSubstr("dsp_ratio"));
-  // a parameter the gait does not know is passed on unchecked (it may drive anything)
-  EXPECT_NO_THROW(check_grid_against_gait(state_grid::parse("something_else:-5:5:1")));
-  EXPECT_THAT(error_of([] { parse_config_overrides("balance_knee_gain=x", "config_overrides"); }),
-              HasSubstr("config_overrides balance_knee_gain: 'x' is not a finite number"));
-  EXPECT_THAT(error_of([] { parse_config_overrides("no_such_key=1", "config_overrides"); }),
-              HasSubstr("'no_such_key' is not a [Walking Config] key"));
-}
-
 TEST(learner_grid, settings_out_of_range_are_errors_naming_the_setting) {
   learner_config c;
   EXPECT_NO_THROW(c.validate());
@@ -595,9 +579,9 @@ TEST(learner_checkpoint, round_trip_and_configuration_check) {
   fs::remove_all(dir);
 }
 
-TEST(learner_artefacts, best_config_applies_the_best_state_to_the_base) {
+TEST(learner_artefacts, run_files_read_back_what_was_written) {
   const fs::path dir =
-      fs::temp_directory_path() / ("stride-learner-best-" + std::to_string(::getpid()));
+      fs::temp_directory_path() / ("stride-learner-files-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const auto g = state_grid::parse("period_time:450:960:15,swing_right_left:15:39:2");
   dense_value_table v(g.size());
@@ -605,16 +589,48 @@ TEST(learner_artefacts, best_config_applies_the_best_state_to_the_base) {
   const best_summary b = summarize_best(g, v, 1);
   EXPECT_EQ(b.best_values, (std::vector<double>{645, 29}));
   EXPECT_THAT(b.text, HasSubstr("period_time = 645, swing_right_left = 29"));
-  write_best_config(dir / "config.ini",
-                    STRIDE_SOURCE_DIR "/components/gait_fmu/resources/config.ini",
-                    parse_config_overrides("balance_hip_roll_gain=0", "o"), g, b.best_values);
-  std::ifstream in(dir / "config.ini");
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_THAT(text.str(), HasSubstr("period_time=645.000000"));
-  EXPECT_THAT(text.str(), HasSubstr("swing_right_left=29.000000"));
-  EXPECT_THAT(text.str(), HasSubstr("balance_hip_roll_gain=0.000000"));
-  EXPECT_THAT(text.str(), HasSubstr("balance_ankle_roll_gain=1.000000"));  // from the base
+  write_best(dir, b, protocol::authors_code, 1200, 30, 7);
+  const best_record best = read_best(dir / run_files::best);
+  EXPECT_EQ(best.rules, protocol::authors_code);
+  EXPECT_EQ(best.rl_steps, 1200);
+  EXPECT_EQ(best.episodes, 30);
+  EXPECT_EQ(best.falls, 7);
+  EXPECT_THAT(best.text, HasSubstr("best state: period_time = 645"));
+
+  evaluation_result e;
+  e.point = {{"period_time", 600}, {"swing_right_left", 20}};
+  e.windows = 12;
+  e.falls = 1;
+  e.distance = 4.25;
+  e.measured_time = 57.6;
+  e.mean_speed = 14.75;
+  e.sim_time = 60;
+  e.physical_speed = 7.378472222222222;
+  e.rules = protocol::authors_code;
+  write_evaluation(dir, e);
+  const evaluation_result back = read_evaluation(dir / run_files::evaluation);
+  EXPECT_EQ(back.point, e.point);
+  EXPECT_EQ(back.windows, 12);
+  EXPECT_EQ(back.falls, 1);
+  EXPECT_EQ(back.distance, 4.25);
+  EXPECT_EQ(back.measured_time, 57.6);
+  EXPECT_EQ(back.mean_speed, 14.75);
+  EXPECT_EQ(back.physical_speed, e.physical_speed);
+  EXPECT_EQ(back.rules, protocol::authors_code);
+
+  write_value_table(dir / run_files::value_table, g, v);
+  std::ofstream(dir / run_files::value_table, std::ios::app) << "450,1";  // a row cut by a kill
+  const csv_columns t = read_csv_log(dir / run_files::value_table);
+  EXPECT_EQ(t.header, (std::vector<std::string>{"period_time", "swing_right_left", "V"}));
+  ASSERT_EQ(t.rows.size(), g.size());
+  EXPECT_EQ(t.rows[g.find({645, 29}, "t")], (std::vector<double>{645, 29, 10}));
+  EXPECT_EQ(t.column("V"), 2);
+
+  EXPECT_EQ(run_files::snapshot(50000), "v_snapshot_50000.csv");
+  EXPECT_EQ(run_files::snapshot_step("v_snapshot_50000.csv"), 50000);
+  EXPECT_EQ(run_files::snapshot_step("v_snapshot_x.csv"), -1);
+  EXPECT_EQ(run_files::snapshot_step("v_table.csv"), -1);
+  EXPECT_THAT(error_of([&] { read_best(dir / "nothing.txt"); }), HasSubstr("nothing.txt"));
   fs::remove_all(dir);
 }
 

@@ -25,10 +25,11 @@ struct run_options {
   std::optional<time_point> stop;      ///< replaces the system's stop time
   bool progress = true;                ///< progress display on stderr
   build_options build;
-  /// Continue the run recorded in this folder: it becomes the output folder, `${resume}` in
-  /// parameter values is replaced by it (else by ""), and an existing results file is kept (the
-  /// new one gets a `-resumed` suffix). The system must use `${resume}` somewhere.
+  /// Continue the run recorded in this folder: it becomes the output folder and `${resume}` in
+  /// parameter values is replaced by it (else by ""). The system must use `${resume}` somewhere.
   std::filesystem::path resume_dir;
+  /// Replaces the system's results file name (e.g. to keep the file of an interrupted run).
+  std::optional<std::string> record_file;
 };
 
 /// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder
@@ -40,6 +41,8 @@ std::size_t substitute_placeholders(system_structure& system,
 
 /// What a run produced.
 struct run_report {
+  /// The system as run: overrides applied, replica groups expanded, placeholders substituted.
+  system_structure system;
   std::filesystem::path output_dir;
   std::filesystem::path results_file;  ///< empty if recording is disabled
   std::filesystem::path manifest_file;
@@ -52,10 +55,11 @@ struct run_report {
 /// The default output folder name for a system, relative to the working directory.
 std::filesystem::path default_output_dir(const system_structure& system);
 
-/// Applies overrides, substitutes placeholders, builds, creates the output folder, writes
-/// `system.xml` (with overrides, placeholders kept), records, runs and writes `manifest.json`. On a
-/// run-time error the results so far and a manifest with "status": "error" are written and the
-/// error is rethrown.
+/// Applies overrides, expands replica groups, substitutes placeholders, builds, creates the
+/// output folder, writes `system.xml` (with overrides; groups and placeholders kept), records,
+/// runs and writes `manifest.json` (with every parameter value the system sets). On a run-time
+/// error the results so far and a manifest with "status": "error" are written and the error is
+/// rethrown.
 run_report run_system(system_structure system, const run_options& options);
 
 }  // namespace stride::cosim

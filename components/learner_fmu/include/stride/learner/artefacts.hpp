@@ -1,12 +1,13 @@
-// What a learner run leaves in its output folder, and its checkpoint.
+// What a learner run leaves in its output folder, written and read here only (the FMU writes,
+// tools such as `stride plot` read):
 //
 //   v_table.csv            grid coordinates + V, one row per state (index order); at the end
 //   v_snapshot_<N>.csv     the same after RL step N (snapshot_steps)
 //   episodes.csv           one row per episode: reward, Σ|ΔV|, falls, start/end state
 //   steps.csv              one row per RL step (log_steps): state, action, speed, reward, δ
 //   paths.csv              torso x-y at every footstep and fall (path_every)
-//   best.txt, config.ini   the best state, and the base config with it applied
-//   evaluation.csv         evaluate mode: distance, mean speed, falls
+//   best.txt               the best state and region, the protocol, the run's counts
+//   evaluation.csv         evaluate mode: distance, mean speed, falls, protocol
 //   checkpoint.bin         written atomically (temp file + rename) at every episode boundary
 #pragma once
 
@@ -21,6 +22,21 @@
 #include "stride/learner/session.hpp"
 
 namespace stride::learner {
+
+/// The names of a run folder's files.
+namespace run_files {
+inline constexpr const char* value_table = "v_table.csv";
+inline constexpr const char* episodes = "episodes.csv";
+inline constexpr const char* steps = "steps.csv";
+inline constexpr const char* paths = "paths.csv";
+inline constexpr const char* best = "best.txt";
+inline constexpr const char* evaluation = "evaluation.csv";
+inline constexpr const char* checkpoint = "checkpoint.bin";
+/// "v_snapshot_<rl_step>.csv"
+std::string snapshot(std::int64_t rl_step);
+/// The step of a snapshot file name, or -1 for another name.
+std::int64_t snapshot_step(const std::string& file_name);
+}  // namespace run_files
 
 /// A learner checkpoint: enough to continue a run exactly from an episode boundary.
 struct checkpoint {
@@ -102,20 +118,44 @@ struct best_summary {
 };
 best_summary summarize_best(const state_grid& grid, const value_table& v, std::size_t top = 10);
 
-/// Checks both ends of every grid dimension that names a gait ([Walking Config]) parameter
-/// against that parameter's valid range; throws learner_error naming the parameter.
-void check_grid_against_gait(const state_grid& grid, std::string_view what = "grid");
+/// How a learn run ended (best.txt).
+struct best_record {
+  std::string text;  ///< as written, several lines
+  protocol rules = protocol::paper;
+  std::int64_t rl_steps = 0;
+  std::int64_t episodes = 0;
+  std::int64_t falls = 0;
+};
+void write_best(const std::filesystem::path& dir, const best_summary& best, protocol rules,
+                std::int64_t rl_steps, std::int64_t episodes, std::int64_t falls);
+/// \throws learner_error naming the file when it is missing or malformed.
+best_record read_best(const std::filesystem::path& file);
 
-/// Parses "key=value,key=value" gait-parameter settings; throws learner_error naming the key
-/// (unknown key, bad number, value out of range).
-std::vector<std::pair<std::string, double>> parse_config_overrides(std::string_view text,
-                                                                   std::string_view what);
+/// The result of an evaluate run (evaluation.csv).
+struct evaluation_result {
+  std::vector<std::pair<std::string, double>> point;  ///< grid dimension name, value
+  std::int64_t windows = 0;                           ///< measurement windows without a fall
+  std::int64_t falls = 0;
+  double distance = 0;        ///< Σ window distances, m
+  double measured_time = 0;   ///< Σ window durations, s
+  double mean_speed = 0;      ///< as the protocol defines it, cm/s
+  double sim_time = 0;        ///< s
+  double physical_speed = 0;  ///< distance / measured time, cm/s
+  protocol rules = protocol::paper;
+};
+void write_evaluation(const std::filesystem::path& dir, const evaluation_result& r);
+/// \throws learner_error naming the file when it is missing or malformed.
+evaluation_result read_evaluation(const std::filesystem::path& file);
 
-/// Writes a ROBOTIS config.ini to `out`: the base file (`base` empty: the framework defaults),
-/// then `overrides`, then the grid dimensions that are gait parameters set to `values`. An
-/// existing base keeps its comments and other sections (the gait core's INI writer).
-void write_best_config(const std::filesystem::path& out, const std::filesystem::path& base,
-                       const std::vector<std::pair<std::string, double>>& overrides,
-                       const state_grid& grid, const std::vector<double>& values);
+/// A numeric CSV log of a run (v_table, snapshots, episodes, steps, paths): the header and the
+/// complete rows (a row cut short by a killed run is left out).
+struct csv_columns {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+  /// Index of a column, or -1.
+  int column(const std::string& name) const;
+};
+/// \throws learner_error naming the file when it cannot be read.
+csv_columns read_csv_log(const std::filesystem::path& file);
 
 }  // namespace stride::learner

@@ -69,6 +69,7 @@ struct learner_config {
   std::int64_t total_steps = 0;  ///< the run ends after this many RL steps; 0 = never
   double step_timeout = 60.0;    ///< s of simulated time in one phase without enough footsteps
   bool balance = true;           ///< gyro balance on (balance_on is false after a restart anyway)
+  double stand_time = 0.0;       ///< evaluate: s the robot stands before it walks
 
   /// Throws learner_error naming the first setting out of its range (or, for authors_code, a
   /// grid without a period_time dimension).
@@ -192,6 +193,8 @@ class session {
   /// the mean of the window speeds), cm/s; 0 before the first window.
   double mean_speed() const;
   walk_phase phase() const { return static_cast<walk_phase>(st_.phase); }
+  /// Whether the gait should walk: false during the stand_time of an evaluation.
+  bool walking() const;
   const learner_config& config() const { return cfg_; }
 
  private:

@@ -3,9 +3,14 @@
 #define STRIDE_CLI_COMMANDS_HPP
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "stride/cosim/run.hpp"
+#include "stride/cosim/system_structure.hpp"
 
 namespace stride::cli {
 
@@ -28,7 +33,16 @@ struct validate_arguments {
   bool quiet = false;
 };
 
-int run(const run_arguments& args);
+/// What an application built on the framework adds to `stride run` (the CLI itself knows no
+/// component): a default system, a check before and a report after a run.
+struct run_extension {
+  std::string_view default_system_xml;   ///< run when no SYSTEM.xml is given ("" = required)
+  std::string_view default_system_name;  ///< names it in messages
+  std::function<void(const cosim::system_structure&)> check;
+  std::function<void(const cosim::run_report&, const run_arguments&)> report;
+};
+
+int run(const run_arguments& args, const run_extension& extension);
 int inspect(const std::filesystem::path& fmu_file);
 int validate(const validate_arguments& args);
 

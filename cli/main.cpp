@@ -7,9 +7,9 @@
 
 #include "calibrate.hpp"
 #include "commands.hpp"
-#include "plot.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/run.hpp"
+#include "stride/study/run_hooks.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"stride: FMI 2.0 co-simulation of FMUs wired by a system XML"};
@@ -64,13 +64,14 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   validate->add_flag("--quiet,-q", validate_args.quiet, "Print only problems");
 
-  stride::cli::plot_arguments plot_args;
+  std::string plot_dir;
+  bool plot_quiet = false;
   auto* plot = app.add_subcommand(
       "plot", "Write the figures (PNG, gnuplot) and summary of a learner run's output folder");
-  plot->add_option("run_dir", plot_args.run_dir, "Output folder of the run")
+  plot->add_option("run_dir", plot_dir, "Output folder of the run")
       ->required()
       ->check(CLI::ExistingDirectory);
-  plot->add_flag("--quiet,-q", plot_args.quiet, "Print nothing");
+  plot->add_flag("--quiet,-q", plot_quiet, "Print nothing");
 
   stride::cli::calibrate_arguments calibrate_args;
   auto* calibrate = stride::cli::add_calibrate_command(app, calibrate_args);
@@ -81,11 +82,20 @@ int main(int argc, char** argv) {
     if (*run) {
       if (!system_file.empty()) run_args.system = system_file;
       if (!stop_time.empty()) run_args.stop_time = stop_time;
-      return stride::cli::run(run_args);
+      // the DARwIn study: its demo as the default system, its checks and reports
+      stride::cli::run_extension study;
+      study.default_system_xml = stride::study::demo_scenario_xml();
+      study.default_system_name = stride::study::demo_scenario_name();
+      study.check = stride::study::check_before_run;
+      study.report = [](const stride::cosim::run_report& report,
+                        const stride::cli::run_arguments& a) {
+        stride::study::report_after_run(report, a.quiet, !a.no_plots);
+      };
+      return stride::cli::run(run_args, study);
     }
     if (*inspect) return stride::cli::inspect(inspect_file);
     if (*calibrate) return stride::cli::calibrate(calibrate_args);
-    if (*plot) return stride::cli::plot(plot_args);
+    if (*plot) return stride::study::plot(plot_dir, plot_quiet);
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;

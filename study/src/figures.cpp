@@ -1,4 +1,7 @@
-#include "plot.hpp"
+#include "stride/study/figures.hpp"
+
+#include "stride/learner/artefacts.hpp"
+#include "stride/study/run_folder.hpp"
 
 #include <sys/wait.h>
 
@@ -11,53 +14,16 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace stride::cli {
+namespace stride::study {
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct csv_table {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
+using csv_table = learner::csv_columns;
 
-  int column(const std::string& name) const {
-    const auto it = std::find(header.begin(), header.end(), name);
-    return it == header.end() ? -1 : static_cast<int>(it - header.begin());
-  }
-};
-
-double to_number(const std::string& s) {
-  double v = std::nan("");
-  std::from_chars(s.data(), s.data() + s.size(), v);
-  return v;
-}
-
-// numeric CSV as written by learner.fmu (no quoting)
 csv_table read_csv(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error("cannot read " + file.string());
-  csv_table t;
-  std::string line;
-  bool first = true;
-  while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    if (first) {
-      t.header = cells;
-      first = false;
-      continue;
-    }
-    if (cells.size() != t.header.size()) continue;  // a row cut by a kill
-    std::vector<double> row;
-    for (const auto& c : cells) row.push_back(to_number(c));
-    t.rows.push_back(std::move(row));
-  }
-  return t;
+  return learner::read_csv_log(file);
 }
 
 void write_text(const fs::path& file, const std::string& text) {
@@ -279,61 +245,18 @@ void paths_figure(const figure_context& fc, const fs::path& paths_file) {
   fc.written->push_back(base.string() + ".png");
 }
 
-std::vector<fs::path> candidate_dirs(const fs::path& dir) {
-  std::vector<fs::path> dirs{dir};
-  std::vector<fs::path> subs;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    if (e.is_directory() && e.path().filename() != "figures") subs.push_back(e.path());
-  }
-  std::sort(subs.begin(), subs.end());
-  dirs.insert(dirs.end(), subs.begin(), subs.end());
-  return dirs;
-}
-
 struct evaluation_row {
   std::string name;
-  std::vector<std::pair<std::string, std::string>> point;
-  double windows = 0, falls = 0, distance = 0, measured = 0, speed = 0, sim = 0;
+  learner::evaluation_result result;
 };
 
 std::vector<evaluation_row> read_evaluations(const fs::path& dir) {
   std::vector<evaluation_row> rows;
-  for (const auto& d : candidate_dirs(dir)) {
-    const fs::path file = d / "evaluation.csv";
+  for (const auto& d : run_folders(dir)) {
+    const fs::path file = d / learner::run_files::evaluation;
     if (!fs::exists(file)) continue;
-    std::ifstream in(file);
-    std::string h, v;
-    std::getline(in, h);
-    std::getline(in, v);
-    std::vector<std::string> hs, vs;
-    std::stringstream a(h), b(v);
-    std::string cell;
-    while (std::getline(a, cell, ',')) hs.push_back(cell);
-    while (std::getline(b, cell, ',')) vs.push_back(cell);
-    if (hs.size() != vs.size()) continue;
-    const auto column = [&hs](const char* name) {
-      return static_cast<std::size_t>(std::find(hs.begin(), hs.end(), name) - hs.begin());
-    };
-    const std::size_t n = column("windows");
-    const std::size_t cols[] = {n,
-                                column("falls"),
-                                column("distance"),
-                                column("measured_time"),
-                                column("mean_speed"),
-                                column("sim_time")};
-    if (std::any_of(std::begin(cols), std::end(cols),
-                    [&](std::size_t c) { return c >= hs.size(); }))
-      continue;
-    evaluation_row r;
-    r.name = d == dir ? dir.filename().string() : d.filename().string();
-    for (std::size_t i = 0; i < n; ++i) r.point.emplace_back(hs[i], vs[i]);
-    r.windows = to_number(vs[cols[0]]);
-    r.falls = to_number(vs[cols[1]]);
-    r.distance = to_number(vs[cols[2]]);
-    r.measured = to_number(vs[cols[3]]);
-    r.speed = to_number(vs[cols[4]]);
-    r.sim = to_number(vs[cols[5]]);
-    rows.push_back(r);
+    rows.push_back({d == dir ? dir.filename().string() : d.filename().string(),
+                    learner::read_evaluation(file)});
   }
   return rows;
 }
@@ -344,16 +267,16 @@ void evaluation_figures(const fs::path& dir, const fs::path& figures,
   std::string dat;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     std::string label = rows[i].name;
-    for (const auto& [k, v] : rows[i].point) label += "\\n" + v;
-    dat += std::to_string(i) + " \"" + label + "\" " + num(rows[i].speed) + " " +
-           num(rows[i].falls) + "\n";
+    for (const auto& [k, v] : rows[i].result.point) label += "\\n" + learner::format_number(v);
+    dat += std::to_string(i) + " \"" + label + "\" " + num(rows[i].result.mean_speed) + " " +
+           num(static_cast<double>(rows[i].result.falls)) + "\n";
   }
   const fs::path base = figures / "evaluation";
   write_text(base.string() + ".dat", dat);
   std::string gp = k_terminal;
   gp += "set output " + quote(base.string() + ".png") + "\n";
   std::string names;
-  for (const auto& [k, v] : rows[0].point) names += (names.empty() ? "" : ", ") + k;
+  for (const auto& [k, v] : rows[0].result.point) names += (names.empty() ? "" : ", ") + k;
   gp += "set title " + quote("evaluation: mean speed per point (" + names + "); label: falls") +
         "\nset ylabel 'mean speed (cm/s)'\nset style fill solid 0.6\nset boxwidth 0.6\n"
         "set yrange [0:*]\nset grid y\nset bmargin 6\n";
@@ -368,7 +291,8 @@ void evaluation_figures(const fs::path& dir, const fs::path& figures,
   std::string plots;
   int k = 0;
   for (const auto& r : rows) {
-    const fs::path p = (r.name == dir.filename().string() ? dir : dir / r.name) / "paths.csv";
+    const fs::path p =
+        (r.name == dir.filename().string() ? dir : dir / r.name) / learner::run_files::paths;
     if (!fs::exists(p)) continue;
     std::size_t segments = 0;
     const std::string blocks = path_blocks(read_csv(p), 200, &segments);
@@ -394,43 +318,28 @@ void evaluation_figures(const fs::path& dir, const fs::path& figures,
 
 }  // namespace
 
-bool has_learner_artefacts(const fs::path& dir) {
-  if (!fs::is_directory(dir)) return false;
-  for (const auto& d : candidate_dirs(dir)) {
-    if (fs::exists(d / "v_table.csv") || fs::exists(d / "evaluation.csv")) return true;
-  }
-  return false;
-}
-
 std::vector<fs::path> write_figures(const fs::path& dir) {
   if (!fs::is_directory(dir)) throw std::runtime_error(dir.string() + " is not a folder");
   const fs::path figures = dir / "figures";
   fs::create_directories(figures);
   std::vector<fs::path> written;
   bool found = false;
-  for (const auto& d : candidate_dirs(dir)) {
-    if (!fs::exists(d / "v_table.csv")) continue;
+  for (const auto& d : run_folders(dir)) {
+    if (!fs::exists(d / learner::run_files::value_table)) continue;
     found = true;
     figure_context fc{d, figures, d == dir ? "" : d.filename().string() + "_", &written};
-    const csv_table v = read_csv(d / "v_table.csv");
+    const csv_table v = read_csv(d / learner::run_files::value_table);
     std::string steps = "the run";
-    if (fs::exists(d / "best.txt")) {
-      std::ifstream in(d / "best.txt");
-      std::string line;
-      while (std::getline(in, line)) {
-        if (line.rfind("RL steps: ", 0) == 0) {
-          steps = line.substr(10, line.find(',') - 10) + " RL steps";
-        }
-      }
+    if (fs::exists(d / learner::run_files::best)) {
+      steps =
+          std::to_string(learner::read_best(d / learner::run_files::best).rl_steps) + " RL steps";
     }
-    heatmap(fc, d / "v_table.csv", "V(s) after " + steps, "v_heatmap");
+    heatmap(fc, d / learner::run_files::value_table, "V(s) after " + steps, "v_heatmap");
     // snapshots, in step order
     std::vector<std::pair<long long, fs::path>> snaps;
     for (const auto& e : fs::directory_iterator(d)) {
-      const std::string n = e.path().filename().string();
-      if (n.rfind("v_snapshot_", 0) == 0 && e.path().extension() == ".csv") {
-        snaps.emplace_back(std::atoll(n.c_str() + 11), e.path());
-      }
+      const long long n = learner::run_files::snapshot_step(e.path().filename().string());
+      if (n >= 0) snaps.emplace_back(n, e.path());
     }
     std::sort(snaps.begin(), snaps.end());
     for (const auto& [n, p] : snaps) {
@@ -438,13 +347,13 @@ std::vector<fs::path> write_figures(const fs::path& dir) {
               "v_heatmap_" + std::to_string(n));
     }
     profiles(fc, v);
-    if (fs::exists(d / "episodes.csv")) {
-      const csv_table e = read_csv(d / "episodes.csv");
+    if (fs::exists(d / learner::run_files::episodes)) {
+      const csv_table e = read_csv(d / learner::run_files::episodes);
       episode_series(fc, e, "sum_abs_dv", "convergence",
                      "convergence: sum of |V change| per episode", "sum |dV|");
       episode_series(fc, e, "reward", "reward", "accumulated reward per episode", "reward");
     }
-    if (fs::exists(d / "paths.csv")) paths_figure(fc, d / "paths.csv");
+    if (fs::exists(d / learner::run_files::paths)) paths_figure(fc, d / learner::run_files::paths);
   }
   const auto evals = read_evaluations(dir);
   if (!evals.empty()) found = true;
@@ -457,39 +366,4 @@ std::vector<fs::path> write_figures(const fs::path& dir) {
   return written;
 }
 
-std::string summarize_run(const fs::path& dir) {
-  std::string out;
-  for (const auto& d : candidate_dirs(dir)) {
-    const fs::path best = d / "best.txt";
-    if (!fs::exists(best)) continue;
-    std::ifstream in(best);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (d != dir) out += d.filename().string() + ":\n";
-    out += text.str();
-  }
-  const auto evals = read_evaluations(dir);
-  if (!evals.empty()) {
-    out += "evaluation (point: windows, falls, distance, measured time, mean speed):\n";
-    for (const auto& r : evals) {
-      std::string point;
-      for (const auto& [k, v] : r.point) point += (point.empty() ? "" : ", ") + k + " = " + v;
-      char buf[200];
-      std::snprintf(buf, sizeof buf, ": %.0f windows, %.0f falls, %.3f m in %.1f s, %.2f cm/s\n",
-                    r.windows, r.falls, r.distance, r.measured, r.speed);
-      out += "  " + r.name + " (" + point + ")" + buf;
-    }
-  }
-  return out;
-}
-
-int plot(const plot_arguments& args) {
-  const auto files = write_figures(args.run_dir);
-  if (!args.quiet) {
-    std::fputs(summarize_run(args.run_dir).c_str(), stdout);
-    for (const auto& f : files) std::printf("figure: %s\n", f.string().c_str());
-  }
-  return 0;
-}
-
-}  // namespace stride::cli
+}  // namespace stride::study

@@ -1,7 +1,5 @@
 #include "commands.hpp"
 
-#include "plot.hpp"
-
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -16,12 +14,6 @@
 
 #ifdef STRIDE_HAVE_FMI_CHECK
 #include "stride/fmi_check/fmu_check.hpp"
-#endif
-
-// the default scenario (models/experiments/demo.xml), embedded at build time
-std::string_view stride_default_scenario_xml();
-#ifndef STRIDE_DEFAULT_SCENARIO_NAME
-#define STRIDE_DEFAULT_SCENARIO_NAME "models/experiments/demo.xml"
 #endif
 
 namespace stride::cli {
@@ -39,10 +31,23 @@ cosim::time_point parse_stop(const std::string& text) {
   }
 }
 
-system_structure load_system(const std::optional<fs::path>& file) {
+system_structure load_system(const std::optional<fs::path>& file, const run_extension& ext) {
   if (file) return parse_system_file(*file);
-  return parse_system_text(stride_default_scenario_xml(),
-                           "(embedded) " STRIDE_DEFAULT_SCENARIO_NAME);
+  if (ext.default_system_xml.empty()) throw validation_error("no system file given");
+  return parse_system_text(ext.default_system_xml,
+                           "(embedded) " + std::string(ext.default_system_name));
+}
+
+// a results file name not yet in `dir`: the interrupted run's results stay as they are
+std::string fresh_results_name(const fs::path& dir, const std::string& name) {
+  const fs::path first = name;
+  fs::path file = first;
+  for (int n = 1; fs::exists(dir / file); ++n) {
+    file =
+        first.parent_path() / (first.stem().string() + "-resumed" +
+                               (n > 1 ? "-" + std::to_string(n) : "") + first.extension().string());
+  }
+  return file.string();
 }
 
 const char* yes_no(bool b) {
@@ -51,7 +56,7 @@ const char* yes_no(bool b) {
 
 }  // namespace
 
-int run(const run_arguments& args) {
+int run(const run_arguments& args, const run_extension& extension) {
   run_options options;
   options.output_dir = args.output;
   options.overrides = args.sets;
@@ -67,22 +72,17 @@ int run(const run_arguments& args) {
     if (!system_file) system_file = args.resume / "system.xml";
     if (!args.output.empty()) throw validation_error("--resume and --output exclude each other");
   }
-  const run_report report = run_system(load_system(system_file), options);
-  if (has_learner_artefacts(report.output_dir)) {
-    // a learner run: where the best region is, and the figures
-    if (!args.quiet) std::fputs(summarize_run(report.output_dir).c_str(), stdout);
-    if (!args.no_plots) {
-      try {
-        const auto figures = write_figures(report.output_dir);
-        if (!args.quiet) {
-          std::printf("figures: %s (%zu PNG)\n", (report.output_dir / "figures").string().c_str(),
-                      figures.size());
-        }
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "stride: warning: no figures: %s\n", e.what());
-      }
-    }
+  system_structure system = load_system(system_file, extension);
+  if (!options.resume_dir.empty()) {
+    options.record_file = fresh_results_name(options.resume_dir, system.record.file);
   }
+  if (extension.check) {
+    system_structure checked = system;
+    for (const auto& o : options.overrides) apply_override(checked, o);
+    extension.check(checked);
+  }
+  const run_report report = run_system(std::move(system), options);
+  if (extension.report) extension.report(report, args);
   if (!args.quiet) {
     std::printf(
         "%s at t = %s s after %lld steps (%.2f s wall, real-time factor %.2f)\n",
