@@ -242,8 +242,13 @@ void progress_display::attach(execution& ex) {
 }
 
 std::string progress_display::line(const execution& ex, time_point t, double wall) const {
+  // a component's own progress only when it is ahead of the clock (it will end the run early);
+  // one that reports nothing (0) leaves the simulated time in charge
   if (!progress_var_) return format(t, wall);
-  return format(t, wall, progress_name_, ex.real_value(*progress_var_));
+  const double progress = ex.real_value(*progress_var_);
+  const double by_time = stop_ > start_ ? to_seconds(t - start_) / to_seconds(stop_ - start_) : 0.0;
+  if (!(progress > by_time)) return format(t, wall);
+  return format(t, wall, progress_name_, progress);
 }
 
 void progress_display::simulation_initialized(const execution& ex, time_point t) {

@@ -2,6 +2,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -67,6 +68,36 @@ TEST(cosim_observers, glob_match) {
   EXPECT_FALSE(glob_match("gait.joint_angle[?]", "gait.joint_angle[13]"));
   EXPECT_TRUE(glob_match("*a*b*", "xxaxxbxx"));
   EXPECT_FALSE(glob_match("robot.*", "gait.x"));
+}
+
+// the last line a progress display prints for a mock whose `progress` output grows by `rate`
+// per step over 10 steps of 10 ms (stop 1 s)
+std::string final_progress_line(double rate) {
+  execution ex(std::make_unique<fixed_step_algorithm>(10 * k_ms), time_point{}, quiet_log());
+  auto m = std::make_unique<mock_component>("m");
+  m->real("progress", causality::output);
+  m->on_step = [rate](mock_component& self, time_point, duration) {
+    self.r("progress") += rate;
+    return step_result::complete;
+  };
+  ex.add_component(std::move(m));
+  std::FILE* out = std::tmpfile();
+  ex.add_observer(std::make_shared<progress_display>(time_point(std::chrono::seconds(1)), out,
+                                                     false, std::chrono::milliseconds(0)));
+  ex.simulate_until(time_point(100 * k_ms));
+  ex.end();
+  std::rewind(out);
+  std::string text, line;
+  for (char buf[256]; std::fgets(buf, sizeof buf, out) != nullptr;) text += buf;
+  std::fclose(out);
+  return text.substr(text.rfind("stride: "));
+}
+
+TEST(cosim_observers, a_components_progress_counts_only_when_it_is_ahead_of_the_clock) {
+  // 10 % of the time; a component at 50 % ends the run early: its progress is shown
+  EXPECT_THAT(final_progress_line(0.05), HasSubstr("m.progress 50.0%"));
+  // a component that reports nothing leaves the simulated time in charge
+  EXPECT_THAT(final_progress_line(0.0), HasSubstr("(10.0%)"));
 }
 
 TEST(cosim_observers, progress_line_shows_time_rtf_and_eta) {

@@ -63,8 +63,8 @@ class csv_recorder : public observer {
 /// Prints simulated time, real-time factor and ETA on a stream (stderr by default). On a
 /// terminal one line is redrawn a few times per second; otherwise a plain line is printed every
 /// `plain_period` of wall time. When a component has a Real output named `progress` (a fraction
-/// 0..1 of its work, e.g. the learner's RL steps), the percentage and the ETA come from it
-/// instead of from the simulated time (a run that a component ends early).
+/// 0..1 of its work, e.g. the learner's RL steps) that is ahead of the simulated time, the
+/// percentage and the ETA come from it (a run that a component ends early).
 class progress_display : public observer {
  public:
   progress_display(time_point stop, std::FILE* out = stderr, std::optional<bool> terminal = {},
