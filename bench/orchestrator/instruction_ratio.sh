@@ -3,7 +3,7 @@
 # time: wall-clock medians on a shared 2-core VM move by +-10 % between runs, instruction counts
 # do not. Runs one iteration of stride_walk and of hand_written_walk (orchestrator_bench) and
 # compares what stride's execution spends in simulate_until with what the hand-written loop
-# spends in the same FMU calls (doStep, set/get of the connected variables).
+# spends in the same component steps (each: the sets, doStep and gets of the exchanged variables).
 # usage: bench/orchestrator/instruction_ratio.sh [BUILD_DIR]   (default build/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -27,7 +27,7 @@ inclusive() {
 
 profile '^stride_walk' "$out/stride.out"
 profile '^hand_written_walk' "$out/hand.out"
-calls='fmu_component::(do_step|set_real|set_integer|get_real|get_integer)\('
+calls='fmu_component::step\('
 stride=$(inclusive "$out/stride.out" 'execution::simulate_until\(')
 hand=$(inclusive "$out/hand.out" "$calls")
 in_fmus=$(inclusive "$out/stride.out" "$calls")

@@ -149,12 +149,14 @@ void hand_written_walk(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * k_walk_steps);
 }
 
-void stride_walk(benchmark::State& state) {
-  auto s = parse_system_file(fs::path(STRIDE_SOURCE_DIR) / "models" / "walk.xml");
+// runs a system file for k_walk_steps base steps per iteration, built afresh each time
+void run_system_file(benchmark::State& state, const char* file, int threads) {
+  auto s = parse_system_file(fs::path(STRIDE_SOURCE_DIR) / "models" / file);
   s.stop = time_point{} + k_walk_steps * k_walk_step;
   s.record = {};
   build_options o;
   o.log = quiet();
+  o.threads = threads;
   for (auto _ : state) {
     state.PauseTiming();
     auto built = build_system(s, o);
@@ -168,9 +170,25 @@ void stride_walk(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * k_walk_steps);
 }
 
+void stride_walk(benchmark::State& state) {
+  run_system_file(state, "walk.xml", 1);
+}
+
+// models/walkers.xml: four independent walkers (gait + robot each), 10 s, on 1 or 2 threads.
+// Wall time: the point is that two threads finish sooner.
+void stride_walkers(benchmark::State& state) {
+  run_system_file(state, "walkers.xml", static_cast<int>(state.range(0)));
+}
+
 }  // namespace
 
 BENCHMARK(hand_written_loop)->Unit(benchmark::kMillisecond);
 BENCHMARK(stride_execution)->Unit(benchmark::kMillisecond);
 BENCHMARK(hand_written_walk)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(stride_walk)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK(stride_walkers)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(5.0);

@@ -99,16 +99,7 @@ class mock_component : public component {
 
   void set_values(const variable_refs& refs, const value_block& values) override {
     ++set_calls;
-    for (std::size_t k = 0; k < refs.reals.size(); ++k) reals_[refs.reals[k]] = values.reals[k];
-    for (std::size_t k = 0; k < refs.integers.size(); ++k) {
-      ints_[refs.integers[k]] = values.integers[k];
-    }
-    for (std::size_t k = 0; k < refs.booleans.size(); ++k) {
-      bools_[refs.booleans[k]] = values.booleans[k];
-    }
-    for (std::size_t k = 0; k < refs.strings.size(); ++k) {
-      strings_[refs.strings[k]] = values.strings[k];
-    }
+    store(refs, values);
     if (!refs.empty()) update();
   }
   void get_values(const variable_refs& refs, value_block& values) override {
@@ -132,19 +123,7 @@ class mock_component : public component {
   step_result step(time_point t, duration dt, const value_block& inputs,
                    value_block& outputs) override {
     ++step_calls;
-    // the inputs of the step, as set_values would store them (without the extra update)
-    for (std::size_t k = 0; k < inputs.reals.size(); ++k) {
-      reals_[exposed_inputs.reals[k]] = inputs.reals[k];
-    }
-    for (std::size_t k = 0; k < inputs.integers.size(); ++k) {
-      ints_[exposed_inputs.integers[k]] = inputs.integers[k];
-    }
-    for (std::size_t k = 0; k < inputs.booleans.size(); ++k) {
-      bools_[exposed_inputs.booleans[k]] = inputs.booleans[k];
-    }
-    for (std::size_t k = 0; k < inputs.strings.size(); ++k) {
-      strings_[exposed_inputs.strings[k]] = inputs.strings[k];
-    }
+    store(exposed_inputs, inputs);  // the inputs of the step, without set_values' extra update
     note("do_step@" + std::to_string(t.time_since_epoch().count()));
     step_times.push_back(t);
     step_sizes.push_back(dt);
@@ -169,6 +148,18 @@ class mock_component : public component {
   int get_calls = 0;  ///< get_values calls outside steps
 
  private:
+  void store(const variable_refs& refs, const value_block& values) {
+    for (std::size_t k = 0; k < refs.reals.size(); ++k) reals_[refs.reals[k]] = values.reals[k];
+    for (std::size_t k = 0; k < refs.integers.size(); ++k) {
+      ints_[refs.integers[k]] = values.integers[k];
+    }
+    for (std::size_t k = 0; k < refs.booleans.size(); ++k) {
+      bools_[refs.booleans[k]] = values.booleans[k];
+    }
+    for (std::size_t k = 0; k < refs.strings.size(); ++k) {
+      strings_[refs.strings[k]] = values.strings[k];
+    }
+  }
   value_reference ref(const std::string& var) const {
     const auto* v = md_.find(var);
     if (v == nullptr) throw std::out_of_range("mock " + name_ + " has no variable " + var);

@@ -522,6 +522,36 @@ TEST(learner_session, evaluation_mode_measures_without_learning) {
   }
 }
 
+TEST(learner_session, an_evaluation_stands_for_stand_time_before_it_walks_and_measures) {
+  learner_config c = small_config();
+  c.mode = learner_mode::evaluate;
+  c.eval_point = {600, 20};
+  c.stand_time = 1.0;
+  c.step_timeout = 0.5;  // shorter than the stand: standing is no lack of progress
+  session_state st;
+  dense_value_table v(c.grid.size());
+  eligibility_traces z;
+  session s(c, st, v, z);
+  s.start();
+  EXPECT_FALSE(s.walking());
+  plant_inputs standing;  // no footsteps while the gait does not walk
+  for (int i = 0; i < 3; ++i) {
+    const advance_report r = s.advance(standing, 300'000'000);
+    EXPECT_FALSE(r.step.has_value());
+  }
+  EXPECT_FALSE(s.walking());  // 0.9 s
+  s.advance(standing, 300'000'000);
+  EXPECT_TRUE(s.walking());  // 1.2 s
+  scripted_plant p;
+  p.seen_restarts = st.restarts;
+  int steps = 0;
+  for (int i = 0; i < 100 && steps < 3; ++i) {
+    if (s.advance(p.step(s, st), 300'000'000).step) ++steps;
+  }
+  EXPECT_EQ(steps, 3);
+  EXPECT_NEAR(st.eval_time, 3 * 0.6, 1e-9);  // windows measured only while walking
+}
+
 TEST(learner_session, a_plant_without_footsteps_or_reset_is_an_error) {
   learner_config c = small_config();
   c.step_timeout = 5;
