@@ -261,15 +261,52 @@ std::vector<evaluation_row> read_evaluations(const fs::path& dir) {
   return rows;
 }
 
+// evaluation runs of the same point (several starts) form one group
+struct point_group {
+  std::string label;  // the first run's name without its "-s<start>" suffix, and the point
+  std::string title;  // the same on one line
+  std::vector<const evaluation_row*> runs;
+};
+
+std::vector<point_group> group_by_point(const std::vector<evaluation_row>& rows) {
+  std::vector<point_group> groups;
+  for (const auto& r : rows) {
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const point_group& g) {
+      return g.runs.front()->result.point == r.result.point;
+    });
+    if (it == groups.end()) {
+      const std::string name = r.name.substr(0, r.name.rfind("-s"));
+      std::string label = name, values;
+      for (const auto& [k, v] : r.result.point) {
+        label += "\\n" + learner::format_number(v);
+        values += (values.empty() ? "" : "/") + learner::format_number(v);
+      }
+      groups.push_back({label, name + " (" + values + ")", {}});
+      it = groups.end() - 1;
+    }
+    it->runs.push_back(&r);
+  }
+  return groups;
+}
+
 void evaluation_figures(const fs::path& dir, const fs::path& figures,
                         const std::vector<evaluation_row>& rows, std::vector<fs::path>* written) {
   if (rows.empty()) return;
+  const std::vector<point_group> groups = group_by_point(rows);
+  // per point: the mean over its starts, the lowest and highest, and the falls of all starts
   std::string dat;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    std::string label = rows[i].name;
-    for (const auto& [k, v] : rows[i].result.point) label += "\\n" + learner::format_number(v);
-    dat += std::to_string(i) + " \"" + label + "\" " + num(rows[i].result.mean_speed) + " " +
-           num(static_cast<double>(rows[i].result.falls)) + "\n";
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    double sum = 0, lo = INFINITY, hi = -INFINITY;
+    std::int64_t falls = 0;
+    for (const auto* r : groups[i].runs) {
+      sum += r->result.mean_speed;
+      lo = std::min(lo, r->result.mean_speed);
+      hi = std::max(hi, r->result.mean_speed);
+      falls += r->result.falls;
+    }
+    const double n = static_cast<double>(groups[i].runs.size());
+    dat += std::to_string(i) + " \"" + groups[i].label + "\" " + num(sum / n) + " " + num(lo) +
+           " " + num(hi) + " " + std::to_string(falls) + " " + num(n) + "\n";
   }
   const fs::path base = figures / "evaluation";
   write_text(base.string() + ".dat", dat);
@@ -277,38 +314,46 @@ void evaluation_figures(const fs::path& dir, const fs::path& figures,
   gp += "set output " + quote(base.string() + ".png") + "\n";
   std::string names;
   for (const auto& [k, v] : rows[0].result.point) names += (names.empty() ? "" : ", ") + k;
-  gp += "set title " + quote("evaluation: mean speed per point (" + names + "); label: falls") +
+  gp += "set title " +
+        quote("mean speed per point (" + names + "), " +
+              std::string(learner::to_string(rows[0].result.rules)) +
+              " protocol: mean of the starts, lowest to highest") +
         "\nset ylabel 'mean speed (cm/s)'\nset style fill solid 0.6\nset boxwidth 0.6\n"
         "set yrange [0:*]\nset grid y\nset bmargin 6\n";
   gp += "plot " + quote(base.string() + ".dat") +
-        " using 1:3:xtic(2) with boxes lc rgb '#3070b0' notitle, '' using 1:3:(sprintf('%d "
-        "falls', $4)) with labels offset 0,1 notitle\n";
+        " using 1:3:xtic(2) with boxes lc rgb '#3070b0' notitle, '' using 1:3:4:5 with "
+        "yerrorbars lc rgb 'black' pt 0 notitle, '' using 1:5:(sprintf('%d falls, %d starts', "
+        "$6, $7)) with labels offset 0,1 notitle\n";
   write_text(base.string() + ".gp", gp);
   run_gnuplot(base.string() + ".gp");
   written->push_back(base.string() + ".png");
 
   // the evaluators' paths in one figure, one colour per point
   std::string plots;
-  int k = 0;
-  for (const auto& r : rows) {
-    const fs::path p =
-        (r.name == dir.filename().string() ? dir : dir / r.name) / learner::run_files::paths;
-    if (!fs::exists(p)) continue;
-    std::size_t segments = 0;
-    const std::string blocks = path_blocks(read_csv(p), 200, &segments);
-    if (segments == 0) continue;
-    const std::string file = (figures / ("eval_paths_" + r.name + ".dat")).string();
-    write_text(file, blocks);
-    plots += std::string(plots.empty() ? "" : ", ") + quote(file) +
-             " using 1:2 with lines lw 2 lt " + std::to_string(++k) + " title " + quote(r.name) +
-             "";
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    bool titled = false;
+    for (const auto* r : groups[g].runs) {
+      const fs::path p =
+          (r->name == dir.filename().string() ? dir : dir / r->name) / learner::run_files::paths;
+      if (!fs::exists(p)) continue;
+      std::size_t segments = 0;
+      const std::string blocks = path_blocks(read_csv(p), 200, &segments);
+      if (segments == 0) continue;
+      const std::string file = (figures / ("eval_paths_" + r->name + ".dat")).string();
+      write_text(file, blocks);
+      plots += std::string(plots.empty() ? "" : ", ") + quote(file) +
+               " using 1:2 with lines lw 2 lt " + std::to_string(g + 1) +
+               (titled ? " notitle" : " title " + quote(groups[g].title));
+      titled = true;
+    }
   }
   if (!plots.empty()) {
     const fs::path pb = figures / "eval_paths";
     std::string g = k_terminal;
     g += "set output " + quote(pb.string() + ".png") +
-         "\nset title 'travelled torso paths per evaluation point'\nset xlabel 'x (m)'\n"
-         "set ylabel 'y (m)'\nset grid\nset key outside right\n";
+         "\nset title 'travelled torso paths per evaluation point (each start from the origin)'"
+         "\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset grid\nset key outside right\n"
+         "set size ratio -1\n";
     g += "plot " + plots + "\n";
     write_text(pb.string() + ".gp", g);
     run_gnuplot(pb.string() + ".gp");
