@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Tests of scripts/speed_map.py and scripts/seed_spread.py against the built `stride` CLI."""
+"""Tests of scripts/speed_map.py, scripts/seed_spread.py (against the built `stride` CLI) and
+scripts/compare_v_tables.py."""
 import csv
 import os
 import subprocess
@@ -11,6 +12,7 @@ SOURCE = os.environ["STRIDE_SOURCE_DIR"]
 CLI = os.environ["STRIDE_CLI"]
 SPEED_MAP = os.path.join(SOURCE, "scripts", "speed_map.py")
 SEED_SPREAD = os.path.join(SOURCE, "scripts", "seed_spread.py")
+COMPARE = os.path.join(SOURCE, "scripts", "compare_v_tables.py")
 
 
 def run(*args):
@@ -119,6 +121,62 @@ class seed_spread(unittest.TestCase):
             missing = run(SEED_SPREAD, os.path.join(tmp, "c"))
             self.assertNotEqual(missing.returncode, 0)
             self.assertIn("missing", missing.stderr)
+
+
+def write_dat(path, values):
+    """A V table in the study authors' format: '#' header, then 'swing period V'."""
+    with open(path, "w") as f:
+        f.write("#Passos_total= 6\n\n#p2_value p1_value Qvalue2p \n")
+        # swing-major, as the authors write it: another row order than the CSV's
+        for (p, s), v in sorted(values.items(), key=lambda kv: (kv[0][1], kv[0][0])):
+            f.write(f"{s} {p}  {v:g}\n")
+
+
+class compare_v_tables(unittest.TestCase):
+    GRID = [(p, s) for p in (450, 465, 480) for s in (15, 17)]
+    # distinct values: best 465/17, then 450/17; the top-2 box is 450..465 × 17..17
+    A = dict(zip(GRID, (1.0, 5.0, 3.0, 6.0, 2.0, 4.0)))
+
+    def test_rank_correlation_best_states_and_overlap(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            a = os.path.join(tmp, "a.csv")
+            with open(a, "w") as f:
+                f.write("period_time,swing_right_left,V\n")
+                for (p, s), v in self.A.items():
+                    f.write(f"{p},{s},{v}\n")
+            same = os.path.join(tmp, "same.dat")  # a monotone transform: the same ranking
+            write_dat(same, {k: v ** 3 + 10 for k, v in self.A.items()})
+            reversed_ = os.path.join(tmp, "reversed.dat")
+            write_dat(reversed_, {k: -v for k, v in self.A.items()})
+            # the two best states tie: mean ranks 5.5, rho = 17 / sqrt(17.5 * 17) = 0.986, and
+            # the smaller state comes first among equal V
+            tied = os.path.join(tmp, "tied.dat")
+            write_dat(tied, {k: 9.0 if v >= 5 else v for k, v in self.A.items()})
+            done = run(COMPARE, "--top", "2", a, same, reversed_, tied)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertIn("A = a.csv: 6 states (period_time/swing_right_left); best 465/17 (6.0); "
+                          "top 2 box 450..465 × 17..17", done.stdout)
+            self.assertIn("| same.dat | 1.000 | 465/17 (6.0) | 465/17 (226.0) | 2 | "
+                          "450..465 × 17..17 | 450..465 × 17..17 |", done.stdout)
+            self.assertIn("| reversed.dat | -1.000 | 465/17 (6.0) | 450/15 (-1.0) | 0 | "
+                          "450..465 × 17..17 | 450..480 × 15..15 |", done.stdout)
+            self.assertIn("| tied.dat | 0.986 | 465/17 (6.0) | 450/17 (9.0) | 2 |", done.stdout)
+
+    def test_other_states_and_malformed_tables_are_errors(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            a = os.path.join(tmp, "a.dat")
+            write_dat(a, self.A)
+            fewer = os.path.join(tmp, "fewer.dat")
+            write_dat(fewer, {k: v for k, v in self.A.items() if k != (480, 17)})
+            other = run(COMPARE, a, fewer)
+            self.assertEqual(other.returncode, 1)
+            self.assertIn("fewer.dat: has no state 480/17", other.stderr)
+            bad = os.path.join(tmp, "bad.csv")
+            with open(bad, "w") as f:
+                f.write("period_time,swing_right_left,V\n450,15,1\n450,17\n")
+            malformed = run(COMPARE, a, bad)
+            self.assertEqual(malformed.returncode, 1)
+            self.assertIn("bad.csv:3: expected 3 fields", malformed.stderr)
 
 
 if __name__ == "__main__":
