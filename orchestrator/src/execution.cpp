@@ -182,6 +182,33 @@ step_outcome execution::step() {
   return outcome;
 }
 
+execution_state execution::save_state() const {
+  if (!initialized_ || finished_) {
+    throw validation_error("save_state() needs an initialized execution that has not ended");
+  }
+  execution_state s;
+  s.steps = steps_;
+  for (const auto& c : components_) s.components.push_back(c->save_state());
+  s.algorithm = algo_->save_state();
+  return s;
+}
+
+void execution::restore_state(const execution_state& s) {
+  if (!initialized_ || finished_) {
+    throw validation_error("restore_state() needs an initialized execution that has not ended");
+  }
+  if (s.components.size() != components_.size()) {
+    throw validation_error("restore_state(): the state has " + std::to_string(s.components.size()) +
+                           " components, the execution " + std::to_string(components_.size()));
+  }
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    components_[i]->restore_state(s.components[i]);
+  }
+  algo_->restore_state(s.algorithm);
+  steps_ = s.steps;
+  now_ = start_ + steps_ * algo_->base_step();
+}
+
 void execution::terminate_components() noexcept {
   for (auto& c : components_) {
     try {

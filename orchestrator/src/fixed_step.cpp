@@ -376,6 +376,46 @@ step_outcome fixed_step_algorithm::step(time_point t) {
 
 namespace {
 
+// what survives a restore: per component its time and cached values
+struct cached_entry {
+  time_point time{};
+  value_block latest;
+  value_block published;
+};
+struct cached_state {
+  time_point now{};
+  std::int64_t steps = 0;
+  std::vector<cached_entry> entries;
+};
+
+}  // namespace
+
+std::any fixed_step_algorithm::save_state() const {
+  const auto& p = *pimpl_;
+  if (!p.initialized) throw validation_error("save_state() before initialize()");
+  cached_state s{p.now, p.steps, {}};
+  for (const auto& e : p.entries) s.entries.push_back({e.time, e.latest, e.published});
+  return s;
+}
+
+void fixed_step_algorithm::restore_state(const std::any& state) {
+  auto& p = *pimpl_;
+  const auto* s = std::any_cast<cached_state>(&state);
+  if (s == nullptr || s->entries.size() != p.entries.size()) {
+    throw validation_error("restore_state(): not a state of this algorithm");
+  }
+  p.now = s->now;
+  p.steps = s->steps;
+  for (std::size_t i = 0; i < p.entries.size(); ++i) {
+    p.entries[i].time = s->entries[i].time;
+    p.entries[i].latest = s->entries[i].latest;
+    p.entries[i].published = s->entries[i].published;
+    p.entries[i].terminated = false;
+  }
+}
+
+namespace {
+
 template <class T>
 decltype(auto) observed_value(const std::vector<entry>& entries,
                               const std::pair<std::size_t, std::size_t>& where, time_point now) {

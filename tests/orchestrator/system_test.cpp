@@ -272,6 +272,22 @@ TEST(cosim_system_builder, missing_fmu_files_are_reported_with_the_search_path) 
   }
 }
 
+TEST(cosim_system_builder, one_rule_tells_bundled_names_from_paths) {
+  EXPECT_TRUE(is_bundled_fmu_name("gait"));
+  EXPECT_FALSE(is_bundled_fmu_name(""));
+  EXPECT_FALSE(is_bundled_fmu_name(".fmu"));
+  EXPECT_FALSE(is_bundled_fmu_name("gait.fmu"));
+  EXPECT_FALSE(is_bundled_fmu_name("fmus/gait"));
+  // the XML writer follows the same rule: a path is made absolute, a name stays a name
+  system_structure s;
+  s.base_dir = "/models";
+  s.add_component("a", "gait");
+  s.add_component("b", ".fmu");
+  const system_structure back = parse_system_text(to_xml(s), "/models/x.xml");
+  EXPECT_EQ(back.components[0].fmu, "gait");
+  EXPECT_EQ(back.components[1].fmu, "/models/.fmu");
+}
+
 TEST(cosim_system_builder, bundled_names_and_the_search_path) {
   EXPECT_TRUE(is_bundled_fmu_name("gait"));
   EXPECT_FALSE(is_bundled_fmu_name("gait.fmu"));

@@ -3,6 +3,7 @@
 #ifndef STRIDE_COSIM_ALGORITHM_HPP
 #define STRIDE_COSIM_ALGORITHM_HPP
 
+#include <any>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -75,6 +76,11 @@ class algorithm {
   /// One base step from `t`. \throws component_error naming component, function and time.
   virtual step_outcome step(time_point t) = 0;
 
+  /// What the algorithm holds between steps (cached values, component times), to be given back
+  /// to restore_state() of the same algorithm; see execution::save_state().
+  virtual std::any save_state() const = 0;
+  virtual void restore_state(const std::any& state) = 0;
+
   /// Current value of an observed variable (the latest value of its component at a time ≤ the
   /// execution's time).
   virtual double real_value(std::size_t observed) const = 0;
@@ -107,6 +113,8 @@ class fixed_step_algorithm final : public algorithm {
   std::size_t observe(variable_id var) override;
   void initialize(time_point start, std::optional<time_point> stop) override;
   step_outcome step(time_point t) override;
+  std::any save_state() const override;
+  void restore_state(const std::any& state) override;
   double real_value(std::size_t observed) const override;
   int integer_value(std::size_t observed) const override;
   bool boolean_value(std::size_t observed) const override;

@@ -8,6 +8,8 @@
 #ifndef STRIDE_COSIM_EXECUTION_HPP
 #define STRIDE_COSIM_EXECUTION_HPP
 
+#include <any>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -57,6 +59,14 @@ struct run_result {
   std::string terminated_by;  ///< component name when terminated_by_component
 };
 
+/// The complete state of an initialized execution: every component's FMU state and what the
+/// algorithm holds between steps. Only for the execution that saved it.
+struct execution_state {
+  std::int64_t steps = 0;
+  std::vector<std::vector<std::byte>> components;
+  std::any algorithm;
+};
+
 /// Components, their connections and their algorithm, run over time.
 class execution {
  public:
@@ -97,6 +107,12 @@ class execution {
   /// On an error or a termination request the execution ends: observers are told (recorders
   /// flush), components are terminated, and an error is rethrown.
   run_result simulate_until(time_point stop);
+  /// Saves the whole system between two steps (components through their save_state).
+  /// \throws component_error when a component cannot save its state.
+  execution_state save_state() const;
+  /// Puts the system back to a saved moment: the steps that follow repeat, bit for bit, those
+  /// that followed the save. Observers are not told (a recorder keeps its rows).
+  void restore_state(const execution_state& state);
   /// Ends the run: observers are told, components terminated. Also done by the destructor.
   void end() noexcept;
   bool ended() const noexcept { return finished_; }
