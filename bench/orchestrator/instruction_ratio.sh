@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # libstride's overhead in the walking closed loop, counted in instructions (callgrind) instead of
 # time: wall-clock medians on a shared 2-core VM move by +-10 % between runs, instruction counts
-# do not. Runs one iteration of stride_walk and of hand_written_walk (orchestrator_bench) and
-# compares what stride's execution spends in simulate_until with what the hand-written loop
-# spends in the same component steps (each: the sets, doStep and gets of the exchanged variables).
+# do not. Profiles stride_walk and hand_written_walk (orchestrator_bench) and compares, per
+# component step, what stride's execution spends in simulate_until with what the hand-written
+# loop spends in the same component steps (each: the sets, doStep and gets of the exchanged
+# variables). Per step, because Google Benchmark may run a different number of iterations.
 # usage: bench/orchestrator/instruction_ratio.sh [BUILD_DIR]   (default build/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -19,20 +20,49 @@ profile() {  # benchmark filter, output file
     --benchmark_min_time=0.000001 > /dev/null 2> "$2.log" ||
     { cat "$2.log" >&2; exit 1; }
 }
-# inclusive instructions of the functions whose names match $2 (summed)
-inclusive() {
-  callgrind_annotate --inclusive=yes --threshold=100 "$1" 2> /dev/null |
-    grep -E "$2" | awk '{gsub(",", "", $1); s += $1} END {printf "%.0f\n", s}'
-}
-
-profile '^stride_walk' "$out/stride.out"
+profile '^stride_walk/' "$out/stride.out"
 profile '^hand_written_walk' "$out/hand.out"
-calls='fmu_component::step\('
-stride=$(inclusive "$out/stride.out" 'execution::simulate_until\(')
-hand=$(inclusive "$out/hand.out" "$calls")
-in_fmus=$(inclusive "$out/stride.out" "$calls")
-awk -v s="$stride" -v h="$hand" -v f="$in_fmus" 'BEGIN {
-  printf "stride simulate_until: %.0f instructions (%.0f in FMU calls)\n", s, f
-  printf "hand-written loop, FMU calls: %.0f instructions\n", h
-  printf "ratio %.4f; orchestration %.0f instructions per 8 ms step (1250 steps)\n", s / h, (s - f) / 1250
-}'
+
+python3 - "$out/stride.out" "$out/hand.out" <<'PY'
+import re, subprocess, sys
+
+def inclusive(file, pattern):
+    # inclusive instructions of the functions whose names match, summed
+    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", file],
+                          capture_output=True, text=True).stdout
+    total = 0
+    for line in text.splitlines():
+        m = re.match(r"\s*([\d,]+)\s", line)
+        if m and re.search(pattern, line):
+            total += int(m.group(1).replace(",", ""))
+    return total
+
+def calls(file, pattern):
+    # how often functions whose names match were called (callgrind's calls= lines)
+    names, current, count = {}, None, 0
+    for line in open(file, errors="replace"):
+        m = re.match(r"cfn=\((\d+)\)(?: (.*))?", line)
+        if m:
+            if m.group(2):
+                names[m.group(1)] = m.group(2)
+            current = names.get(m.group(1), "")
+        elif line.startswith("calls=") and current and re.search(pattern, current):
+            count += int(line.split("=")[1].split()[0])
+    return count
+
+step = r"fmu_component::step\("
+stride_file, hand_file = sys.argv[1], sys.argv[2]
+stride_total = inclusive(stride_file, r"execution::simulate_until\(")
+stride_in_steps = inclusive(stride_file, step)
+stride_steps = calls(stride_file, step)
+hand_total = inclusive(hand_file, step)
+hand_steps = calls(hand_file, step)
+per_stride = stride_total / stride_steps
+per_hand = hand_total / hand_steps
+print(f"stride simulate_until: {stride_total} instructions over {stride_steps} component steps "
+      f"({stride_in_steps} in the steps)")
+print(f"hand-written loop: {hand_total} instructions in {hand_steps} component steps")
+print(f"ratio {per_stride / per_hand:.4f} per component step; orchestration "
+      f"{(stride_total - stride_in_steps) / (stride_steps / 2):.0f} instructions per 8 ms step "
+      f"(two components)")
+PY

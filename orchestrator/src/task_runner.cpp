@@ -1,5 +1,6 @@
 #include "task_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace stride::cosim {
@@ -7,12 +8,16 @@ namespace stride::cosim {
 namespace {
 
 // how long an idle worker polls for new tasks before it sleeps
-constexpr std::chrono::microseconds k_spin_time{50};
+constexpr std::chrono::microseconds k_spin_time{1000};
 
-void cpu_relax() noexcept {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#endif
+// polls `done` for up to k_spin_time
+template <class F>
+void spin_until(F done) {
+  const auto until = std::chrono::steady_clock::now() + k_spin_time;
+  // plain loads, no pause instruction: a virtual CPU that pauses in a loop may be descheduled
+  for (int i = 0; !done(); ++i) {
+    if ((i & 63) == 0 && std::chrono::steady_clock::now() > until) return;
+  }
 }
 
 }  // namespace
@@ -50,6 +55,7 @@ void task_runner::finish(std::size_t task, bool release_successors) {
   }
   ready_count_.store(ready_.size(), std::memory_order_relaxed);
   --unfinished_;
+  unfinished_count_.store(unfinished_, std::memory_order_release);
 }
 
 void task_runner::execute(std::size_t task) {
@@ -71,12 +77,59 @@ void task_runner::execute(std::size_t task) {
   if (notify) changed_.notify_all();
 }
 
+void task_runner::run_independent(std::uint64_t generation, std::size_t tasks,
+                                  const std::function<bool(std::size_t)>& work) {
+  // a ticket is the generation (high half) and the next task (low half): a thread that comes
+  // late, when its generation is over, claims nothing (and touches nothing of a later run)
+  for (;;) {
+    std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
+    std::size_t t = 0;
+    do {
+      t = static_cast<std::size_t>(ticket & 0xffffffffu);
+      if ((ticket >> 32) != generation || t >= tasks) return;
+    } while (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel));
+    if (!failed_.load(std::memory_order_relaxed)) {
+      try {
+        work(t);  // nothing waits for it: what it returns does not matter
+      } catch (...) {
+        std::lock_guard lock(mutex_);
+        if (!error_) error_ = std::current_exception();
+        failed_.store(true, std::memory_order_relaxed);
+      }
+    }
+    if (unfinished_count_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+      std::lock_guard lock(mutex_);  // the caller may be asleep on changed_
+      changed_.notify_all();
+      return;
+    }
+  }
+}
+
 void task_runner::run(const step_plan& plan, const std::function<bool(std::size_t)>& work) {
   std::unique_lock lock(mutex_);
   plan_ = &plan;
   work_ = &work;
   error_ = nullptr;
   failed_.store(false, std::memory_order_relaxed);
+  independent_ = std::all_of(plan.predecessor_count.begin(), plan.predecessor_count.end(),
+                             [](int n) { return n == 0; });
+  if (independent_) {
+    // each thread takes its own share; no lock per task
+    const std::uint64_t generation = generation_.load(std::memory_order_relaxed) + 1;
+    unfinished_count_.store(plan.tasks.size(), std::memory_order_relaxed);
+    ticket_.store(generation << 32, std::memory_order_release);
+    generation_.store(generation, std::memory_order_release);
+    lock.unlock();
+    changed_.notify_all();
+    run_independent(generation, plan.tasks.size(), work);
+    spin_until([this] { return unfinished_count_.load(std::memory_order_acquire) == 0; });
+    lock.lock();
+    changed_.wait(lock, [this] { return unfinished_count_.load(std::memory_order_acquire) == 0; });
+    plan_ = nullptr;
+    work_ = nullptr;
+    if (error_) std::rethrow_exception(error_);
+    return;
+  }
   waiting_for_ = plan.predecessor_count;
   blocked_.assign(plan.tasks.size(), false);
   ready_.clear();
@@ -85,6 +138,7 @@ void task_runner::run(const step_plan& plan, const std::function<bool(std::size_
     if (waiting_for_[t] == 0) ready_.push_back(t);
   }
   unfinished_ = plan.tasks.size();
+  unfinished_count_.store(unfinished_, std::memory_order_relaxed);
   ready_count_.store(ready_.size(), std::memory_order_relaxed);
   lock.unlock();
   changed_.notify_all();
@@ -97,6 +151,13 @@ void task_runner::run(const step_plan& plan, const std::function<bool(std::size_
       execute(task);
       lock.lock();
     } else {
+      // the others are busy: poll a little before sleeping
+      lock.unlock();
+      spin_until([this] {
+        return unfinished_count_.load(std::memory_order_acquire) == 0 ||
+               ready_count_.load(std::memory_order_relaxed) > 0;
+      });
+      lock.lock();
       changed_.wait(lock, [this] { return unfinished_ == 0 || !ready_.empty(); });
     }
   }
@@ -106,16 +167,28 @@ void task_runner::run(const step_plan& plan, const std::function<bool(std::size_
 }
 
 void task_runner::worker_loop() {
+  std::uint64_t seen = 0;  // the last generation of independent tasks this thread ran
   for (;;) {
     // poll a little before sleeping
-    const auto spin_until = std::chrono::steady_clock::now() + k_spin_time;
-    for (int i = 0; ready_count_.load(std::memory_order_relaxed) == 0; ++i) {
-      cpu_relax();
-      if ((i & 63) == 0 && std::chrono::steady_clock::now() > spin_until) break;
-    }
+    spin_until([&] {
+      return ready_count_.load(std::memory_order_relaxed) > 0 ||
+             generation_.load(std::memory_order_acquire) != seen;
+    });
     std::unique_lock lock(mutex_);
-    changed_.wait(lock, [this] { return stopping_ || !ready_.empty(); });
+    changed_.wait(lock, [&] {
+      return stopping_ || !ready_.empty() || generation_.load(std::memory_order_acquire) != seen;
+    });
     if (stopping_) return;
+    if (generation_.load(std::memory_order_acquire) != seen) {
+      // the run of this generation, read under the lock; it may be over already
+      seen = generation_.load(std::memory_order_acquire);
+      const bool current = independent_ && plan_ != nullptr;
+      const std::size_t tasks = current ? plan_->tasks.size() : 0;
+      const auto* work = work_;
+      lock.unlock();
+      if (current) run_independent(seen, tasks, *work);
+      continue;
+    }
     std::size_t task = 0;
     if (!take(task)) continue;
     lock.unlock();
