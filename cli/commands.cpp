@@ -197,8 +197,7 @@ int validate(const validate_arguments& args) {
           "%s order %s, base step %s s, %s .. %s s\n",
           args.file.string().c_str(), system.name.c_str(), ex.component_count(),
           expand_replicas(system).connections.size(), ex.connections().size(),
-          ex.algorithm_name().c_str(),
-          order.c_str(), format_seconds(built.base_step).c_str(),
+          ex.algorithm_name().c_str(), order.c_str(), format_seconds(built.base_step).c_str(),
           format_seconds(built.start).c_str(), format_seconds(built.stop).c_str());
     }
     return 0;
