@@ -130,6 +130,16 @@ void heatmap(const figure_context& fc, const fs::path& table_file, const std::st
   gp += "set xlabel " + quote(t.header[0] + unit_of(t.header[0])) + "\n";
   gp += "set ylabel " + quote(t.header[1] + unit_of(t.header[1])) + "\n";
   gp += "set cblabel 'V(s)'\nset palette rgb 33,13,10\nset autoscale fix\nset key below\n";
+  // a few deep falls would take the whole colour scale: below -max V all is one colour
+  double lowest = INFINITY;
+  for (const auto& [key, v] : cells) lowest = std::min(lowest, v);
+  if (best_v > 0 && lowest < -best_v) {
+    gp += "set cbrange [" + num(-best_v) + ":" + num(best_v) + "]\n";
+    char label[80];
+    std::snprintf(label, sizeof label, "set cblabel 'V(s); %.4g and below in one colour'\n",
+                  -best_v);
+    gp += label;
+  }
   gp += "plot " + quote(base.string() + ".dat") +
         " using 1:2:3 with image notitle, '-' using 1:2 "
         "with points pt 6 ps 3 lw 2 lc rgb 'white' title " +
