@@ -11,6 +11,8 @@
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_builder.hpp"
 #include "stride/cosim/system_structure.hpp"
+#include "stride/suite/runner.hpp"
+#include "stride/suite/suite.hpp"
 
 #ifdef STRIDE_HAVE_FMI_CHECK
 #include "stride/fmi_check/fmu_check.hpp"
@@ -65,6 +67,14 @@ int run(const run_arguments& args, const run_extension& extension) {
   options.build.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
   options.build.fmu_debug_logging = args.fmu_debug_log;
   options.build.threads = args.threads;
+  options.record_signals = args.signals;
+  if (args.record_interval) {
+    try {
+      options.record_interval = parse_duration(*args.record_interval);
+    } catch (const std::exception& e) {
+      throw validation_error(std::string("--record-interval: ") + e.what());
+    }
+  }
   std::optional<fs::path> system_file = args.system;
   if (!args.resume.empty()) {
     // resume the system as it was run (overrides included), unless another one is given
@@ -82,6 +92,14 @@ int run(const run_arguments& args, const run_extension& extension) {
     extension.check(checked);
   }
   const run_report report = run_system(std::move(system), options);
+  if (!args.save_reference.empty()) {
+    if (report.results_file.empty()) throw validation_error("--save-reference: nothing recorded");
+    if (args.save_reference.has_parent_path()) {
+      fs::create_directories(args.save_reference.parent_path());
+    }
+    fs::copy_file(report.results_file, args.save_reference, fs::copy_options::overwrite_existing);
+    if (!args.quiet) std::printf("reference: %s\n", args.save_reference.string().c_str());
+  }
   if (extension.report) extension.report(report, args);
   if (!args.quiet) {
     std::printf(
@@ -93,6 +111,34 @@ int run(const run_arguments& args, const run_extension& extension) {
     std::printf("output: %s\n", report.output_dir.string().c_str());
   }
   return 0;
+}
+
+int test(const test_arguments& args, const stride::suite::assertion_registry& kinds) {
+  const stride::suite::suite_spec suite = stride::suite::parse_suite_file(args.suite);
+  stride::suite::check_suite(suite, kinds);
+  stride::suite::run_settings settings;
+  settings.stride = fs::read_symlink("/proc/self/exe");
+  settings.output_dir = args.output;
+  if (settings.output_dir.empty()) {
+    system_structure named;
+    named.name = suite.name;
+    settings.output_dir = default_output_dir(named);
+  }
+  settings.jobs = args.jobs;
+  settings.filter = args.filter;
+  settings.kinds = kinds;
+  settings.progress = args.quiet ? nullptr : stdout;
+  const stride::suite::suite_report report = stride::suite::run_suite(suite, settings);
+  if (!args.junit.empty()) stride::suite::write_junit(args.junit, suite, report);
+  const std::string summary = stride::suite::format_summary(report);
+  if (args.quiet) {
+    std::fputs(summary.substr(summary.rfind('\n', summary.size() - 2) + 1).c_str(), stdout);
+  } else {
+    std::printf("\n%s", summary.c_str());
+    std::printf("output: %s\n", settings.output_dir.string().c_str());
+  }
+  const bool all_passed = report.count(stride::suite::case_status::passed) == report.cases.size();
+  return all_passed ? 0 : 1;
 }
 
 int inspect(const fs::path& fmu_file) {

@@ -11,6 +11,7 @@
 
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_structure.hpp"
+#include "stride/suite/assertions.hpp"
 
 namespace stride::cli {
 
@@ -21,9 +22,12 @@ struct run_arguments {
   std::vector<std::string> sets;
   bool quiet = false;
   bool fmu_debug_log = false;
-  std::filesystem::path resume;  ///< --resume DIR (empty: a new run)
-  bool no_plots = false;         ///< skip the figures after a learner run
-  int threads = 1;               ///< --threads
+  std::filesystem::path resume;      ///< --resume DIR (empty: a new run)
+  bool no_plots = false;             ///< skip the figures after a learner run
+  int threads = 1;                   ///< --threads
+  std::vector<std::string> signals;  ///< --signals: record these instead of the system's
+  std::optional<std::string> record_interval;
+  std::filesystem::path save_reference;  ///< --save-reference: a copy of the results CSV
 };
 
 struct validate_arguments {
@@ -43,6 +47,19 @@ struct run_extension {
 };
 
 int run(const run_arguments& args, const run_extension& extension);
+
+struct test_arguments {
+  std::filesystem::path suite;
+  std::filesystem::path junit;   ///< empty: none
+  std::filesystem::path output;  ///< empty: ./stride-out/<suite>-<stamp>
+  std::string filter;
+  int jobs = 1;
+  bool quiet = false;
+};
+
+/// `stride test`: runs a suite; 0 only when every case passed. `kinds` are the assertion kinds
+/// (built-in ones plus the application's).
+int test(const test_arguments& args, const stride::suite::assertion_registry& kinds);
 int inspect(const std::filesystem::path& fmu_file);
 int validate(const validate_arguments& args);
 

@@ -10,6 +10,8 @@
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/study/run_hooks.hpp"
+#include "stride/study/suite_assertions.hpp"
+#include "stride/suite/assertions.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"stride: FMI 2.0 co-simulation of FMUs wired by a system XML"};
@@ -42,12 +44,36 @@ int main(int argc, char** argv) {
                   "identical for any count)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
+  run->add_option("--signals", run_args.signals,
+                  "Record these signals (comp.var patterns with * and ?) instead of the system's")
+      ->allow_extra_args(false);
+  std::string record_interval;
+  run->add_option("--record-interval", record_interval,
+                  "Recording interval in seconds (a multiple of the base step)");
+  run->add_option("--save-reference", run_args.save_reference,
+                  "Also write the results CSV to this file: a reference for `stride test`");
   run->add_flag("--no-plots", run_args.no_plots,
                 "Do not write figures after a learner run (see `stride plot`)");
 
   std::string inspect_file;
   auto* inspect = app.add_subcommand("inspect", "Show an FMU's model description");
   inspect->add_option("fmu", inspect_file, "FMU file")->required()->check(CLI::ExistingFile);
+
+  stride::cli::test_arguments test_args;
+  std::string suite_file;
+  auto* test = app.add_subcommand(
+      "test",
+      "Run a regression suite (docs/regression-suites.md): exit status 0 only if every "
+      "case passes");
+  test->add_option("suite", suite_file, "Suite XML file")->required()->check(CLI::ExistingFile);
+  test->add_option("--junit", test_args.junit, "Write JUnit XML here");
+  test->add_option("--filter", test_args.filter, "Run only the cases whose names match (* and ?)");
+  test->add_option("--jobs,-j", test_args.jobs, "Cases run at the same time")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  test->add_option("--output,-o", test_args.output,
+                   "Folder for the cases' runs (default ./stride-out/<suite>-<YYYYmmdd-HHMMSS>)");
+  test->add_flag("--quiet,-q", test_args.quiet, "Print only the closing line");
 
   stride::cli::validate_arguments validate_args;
   std::string validate_file;
@@ -82,6 +108,7 @@ int main(int argc, char** argv) {
     if (*run) {
       if (!system_file.empty()) run_args.system = system_file;
       if (!stop_time.empty()) run_args.stop_time = stop_time;
+      if (!record_interval.empty()) run_args.record_interval = record_interval;
       // the DARwIn study: its demo as the default system, its checks and reports
       stride::cli::run_extension study;
       study.default_system_xml = stride::study::demo_scenario_xml();
@@ -94,6 +121,12 @@ int main(int argc, char** argv) {
       return stride::cli::run(run_args, study);
     }
     if (*inspect) return stride::cli::inspect(inspect_file);
+    if (*test) {
+      test_args.suite = suite_file;
+      stride::suite::assertion_registry kinds = stride::suite::builtin_assertions();
+      kinds.merge(stride::study::learner_assertions());  // the study's: best_state, value_at
+      return stride::cli::test(test_args, kinds);
+    }
     if (*calibrate) return stride::cli::calibrate(calibrate_args);
     if (*plot) return stride::study::plot(plot_dir, plot_quiet);
     if (*validate) {

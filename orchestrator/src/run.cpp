@@ -216,6 +216,12 @@ run_report run_system(system_structure system, const run_options& options) {
                            options.resume_dir.string());
   }
   if (options.record_file) system.record.file = *options.record_file;
+  if (!options.record_signals.empty()) {
+    system.record.enabled = true;
+    system.record.signals = options.record_signals;
+    system.record.signal_locations.clear();
+  }
+  if (options.record_interval) system.record.interval = *options.record_interval;
 
   report.system = system;
   built_system built = build_system(system, options.build);

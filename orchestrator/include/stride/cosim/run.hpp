@@ -30,6 +30,10 @@ struct run_options {
   std::filesystem::path resume_dir;
   /// Replaces the system's results file name (e.g. to keep the file of an interrupted run).
   std::optional<std::string> record_file;
+  /// Replace what the system records: these signal patterns (recording on) ...
+  std::vector<std::string> record_signals;
+  /// ... and this interval (a multiple of the base step).
+  std::optional<duration> record_interval;
 };
 
 /// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder

@@ -1,0 +1,93 @@
+#include "stride/suite/results.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace stride::suite {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// one CSV line into fields; "..." quotes a field, "" inside it is a quote
+std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else if (c != '\r') {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::optional<double> number(const std::string& text) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+std::optional<std::size_t> recorded_signals::column(const std::string& name) const {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == name) return i;
+  }
+  return std::nullopt;
+}
+
+recorded_signals read_recorded_signals(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read (was it recorded?)");
+  recorded_signals r;
+  r.file = file;
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(file.string() + ": empty");
+  const auto header = split_fields(line);
+  if (header.empty() || header[0] != "time") {
+    throw std::runtime_error(file.string() + ":1: the first column must be 'time'");
+  }
+  r.names.assign(header.begin() + 1, header.end());
+  r.values.assign(r.names.size(), {});
+  r.is_text.assign(r.names.size(), false);
+  for (int line_no = 2; std::getline(in, line); ++line_no) {
+    if (line.empty() || line == "\r") continue;
+    const auto fields = split_fields(line);
+    const std::string where = file.string() + ":" + std::to_string(line_no) + ": ";
+    if (fields.size() != header.size()) {
+      throw std::runtime_error(where + std::to_string(fields.size()) + " fields, the header has " +
+                               std::to_string(header.size()));
+    }
+    const auto t = number(fields[0]);
+    if (!t) throw std::runtime_error(where + "time '" + fields[0] + "' is not a number");
+    r.time.push_back(*t);
+    for (std::size_t c = 0; c < r.names.size(); ++c) {
+      const auto v = number(fields[c + 1]);
+      if (!v) r.is_text[c] = true;
+      r.values[c].push_back(v ? *v : std::nan(""));
+    }
+  }
+  for (std::size_t c = 0; c < r.names.size(); ++c) {
+    if (r.is_text[c]) r.values[c].clear();
+  }
+  return r;
+}
+
+}  // namespace stride::suite
