@@ -84,7 +84,11 @@ suite::assertion_registry learner_assertions() {
         const auto table = v_table(a, out);
         if (table.rows.empty()) return {false, "the V table is empty"};
         std::size_t best = 0;
-        for (std::size_t s = 1; s < table.rows.size(); ++s) {
+        for (std::size_t s = 0; s < table.rows.size(); ++s) {
+          // a NaN never compares greater: left in, a NaN first row would be "the best"
+          if (std::isnan(table.rows[s].back())) {
+            return {false, "V is NaN in row " + std::to_string(s + 1) + " of the V table"};
+          }
           if (table.rows[s].back() > table.rows[best].back()) best = s;
         }
         std::string state;
@@ -105,7 +109,9 @@ suite::assertion_registry learner_assertions() {
   r["value_at"] = {
       {"state", "min", "max", "folder"},
       [](const suite::assertion_spec& a, const fs::path&) {
-        assignments(a.get("state").value_or(""), "state");
+        for (const auto& [name, value] : assignments(a.get("state").value_or(""), "state")) {
+          number(value, "state " + name);
+        }
         if (!a.get("min") && !a.get("max")) throw std::invalid_argument("needs min, max or both");
         if (a.get("min")) number(*a.get("min"), "min");
         if (a.get("max")) number(*a.get("max"), "max");

@@ -179,11 +179,16 @@ recorded_signals read_reference(const assertion_spec& a, const fs::path& suite_d
   const fs::path file = suite_dir / required(a, "file");
   if (!fs::exists(file))
     throw std::invalid_argument("reference file " + file.string() + " not found");
+  recorded_signals ref;
   try {
-    return read_recorded_signals(file);
+    ref = read_recorded_signals(file);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());
   }
+  // no time point would compare nothing and pass
+  if (ref.time.empty())
+    throw std::invalid_argument("reference file " + file.string() + " has no rows");
+  return ref;
 }
 
 // linear interpolation of a recorded column at time t (times ascending)
@@ -307,37 +312,41 @@ assertion_registry builtin_assertions() {
                           std::to_string(s.rows.size()) + " samples in " + w.str() + " outside)");
             });
       }};
-  r["final"] = {{"signal", "value", "tolerance", "min", "max", "from", "to"},
-                [](const assertion_spec& a, const fs::path&) {
-                  window_of(a);
-                  const bool has_value = a.get("value").has_value();
-                  const bounds b = bounds_of(a, !has_value);
-                  if (has_value) {
-                    number_attribute(a, "value");
-                    if (number_attribute(a, "tolerance").value_or(0) < 0) {
-                      throw std::invalid_argument("tolerance is negative");
-                    }
-                  } else if (a.get("tolerance")) {
-                    throw std::invalid_argument("tolerance goes with value");
-                  }
-                  (void)b;
-                },
-                one_signal,
-                [](const assertion_spec& a, const case_output& out) {
-                  bounds b = bounds_of(a, false);
-                  if (const auto v = number_attribute(a, "value")) {
-                    const double tol = number_attribute(a, "tolerance").value_or(0);
-                    b = {*v - tol, *v + tol};
-                  }
-                  return with_samples(a, out, "signal",
-                                      [&](const std::string& sig, const series& s, const window&) {
-                                        const std::size_t last = s.rows.back();
-                                        const double v = (*s.values)[last];
-                                        if (b.contains(v)) return outcome{true, {}};
-                                        return fail("final " + sig + " = " + num(v) + " at " +
-                                                    at(out, last) + ", not " + b.str());
-                                      });
-                }};
+  r["final"] = {
+      {"signal", "value", "tolerance", "min", "max", "from", "to"},
+      [](const assertion_spec& a, const fs::path&) {
+        window_of(a);
+        const bool has_value = a.get("value").has_value();
+        const bounds b = bounds_of(a, !has_value);
+        if (has_value && (a.get("min") || a.get("max"))) {
+          throw std::invalid_argument("takes value and tolerance, or min and max; not both");
+        }
+        if (has_value) {
+          number_attribute(a, "value");
+          if (number_attribute(a, "tolerance").value_or(0) < 0) {
+            throw std::invalid_argument("tolerance is negative");
+          }
+        } else if (a.get("tolerance")) {
+          throw std::invalid_argument("tolerance goes with value");
+        }
+        (void)b;
+      },
+      one_signal,
+      [](const assertion_spec& a, const case_output& out) {
+        bounds b = bounds_of(a, false);
+        if (const auto v = number_attribute(a, "value")) {
+          const double tol = number_attribute(a, "tolerance").value_or(0);
+          b = {*v - tol, *v + tol};
+        }
+        return with_samples(a, out, "signal",
+                            [&](const std::string& sig, const series& s, const window&) {
+                              const std::size_t last = s.rows.back();
+                              const double v = (*s.values)[last];
+                              if (b.contains(v)) return outcome{true, {}};
+                              return fail("final " + sig + " = " + num(v) + " at " + at(out, last) +
+                                          ", not " + b.str());
+                            });
+      }};
   r["mean"] = {{"signal", "min", "max", "from", "to"},
                with_bounds,
                one_signal,

@@ -107,12 +107,13 @@ pid_t spawn(const std::vector<std::string>& args, const fs::path& log) {
   return pid;
 }
 
-// the last non-empty line of a log: the run's one-line error
+// the run's one-line error: the last non-empty line of its log, passing over the command line
+// parser's closing hint
 std::string last_line(const fs::path& log) {
   std::ifstream in(log);
   std::string line, last;
   while (std::getline(in, line)) {
-    if (!line.empty()) last = line;
+    if (!line.empty() && line.rfind("Run with --help", 0) != 0) last = line;
   }
   return last;
 }
@@ -155,6 +156,10 @@ std::string seconds(double s) {
 void check_suite(const suite_spec& suite, const assertion_registry& kinds) {
   const fs::path dir = suite.file.parent_path();
   for (const auto& c : suite.cases) {
+    if (!fs::is_regular_file(c.system)) {
+      throw cosim::validation_error(c.where.str() + ": system file " + c.system.string() +
+                                    " not found");
+    }
     for (const auto& a : c.assertions) check_assertion(a, kinds, dir);
   }
 }
@@ -291,7 +296,8 @@ void write_junit(const fs::path& file, const suite_spec& suite, const suite_repo
     if (c.status == case_status::failed) {
       std::string all;
       for (const auto& f : c.failures) all += f + "\n";
-      x << "      <failure message=\"" << xml_escape(c.failures.front()) << "\" type=\"assertion\">"
+      const std::string first = c.failures.empty() ? "failed" : c.failures.front();
+      x << "      <failure message=\"" << xml_escape(first) << "\" type=\"assertion\">"
         << xml_escape(all) << "</failure>\n";
     } else {
       x << "      <error message=\"" << xml_escape(c.error) << "\" type=\"run\">"

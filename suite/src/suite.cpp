@@ -5,8 +5,10 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "stride/cosim/error.hpp"
+#include "stride/cosim/time.hpp"
 
 namespace stride::suite {
 
@@ -82,6 +84,24 @@ class reader {
     return s;
   }
 
+  // a time attribute checked before anything runs (the run checks it against the system again)
+  std::optional<std::string> seconds(const tinyxml2::XMLElement* e, const char* name,
+                                     bool positive) const {
+    const char* v = e->Attribute(name);
+    if (v == nullptr) return std::nullopt;
+    try {
+      const cosim::duration d = cosim::parse_duration(v);
+      if (positive ? d.count() <= 0 : d.count() < 0) {
+        fail(e->GetLineNum(), std::string(name) + "=\"" + v + "\" must be " +
+                                  (positive ? "positive" : "at least 0"));
+      }
+    } catch (const std::logic_error& x) {
+      fail(e->GetLineNum(),
+           std::string(name) + "=\"" + v + "\" is not a time in seconds (" + x.what() + ")");
+    }
+    return std::string(v);
+  }
+
   case_spec read_case(const tinyxml2::XMLElement* e) const {
     only(e, {"name", "system", "stop", "interval"});
     case_spec c;
@@ -96,8 +116,8 @@ class reader {
                                 "folder)");
     }
     c.system = file_.parent_path() / required(e, "system");
-    if (const char* v = e->Attribute("stop")) c.stop_time = v;
-    if (const char* v = e->Attribute("interval")) c.record_interval = v;
+    c.stop_time = seconds(e, "stop", false);
+    c.record_interval = seconds(e, "interval", true);
     for (auto* a = e->FirstChildElement(); a != nullptr; a = a->NextSiblingElement()) {
       if (std::string_view(a->Name()) == "set") {
         only(a, {"variable", "value"});

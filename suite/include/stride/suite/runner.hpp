@@ -39,8 +39,9 @@ struct suite_report {
   std::size_t count(case_status s) const;
 };
 
-/// Checks every assertion against `kinds` before anything runs: unknown kinds and attributes,
-/// bad values, missing reference files. \throws cosim::validation_error naming file and line.
+/// Checks every case before anything runs: its system file exists; its assertions against
+/// `kinds` (unknown kinds and attributes, bad values, missing reference files). \throws
+/// cosim::validation_error naming file and line.
 void check_suite(const suite_spec& suite, const assertion_registry& kinds);
 
 /// Runs the cases whose names match the filter. \throws cosim::validation_error when the filter

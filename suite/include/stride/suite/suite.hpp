@@ -28,7 +28,7 @@ struct case_spec {
   std::string name;
   std::filesystem::path system;                ///< resolved against the suite file's folder
   std::optional<std::string> stop_time;        ///< seconds, replaces the system's
-  std::optional<std::string> record_interval;  ///< seconds; default: every base step
+  std::optional<std::string> record_interval;  ///< seconds; default: the system's
   std::vector<std::string> sets;               ///< "comp.var=value", in order
   std::vector<assertion_spec> assertions;
   cosim::source_location where;

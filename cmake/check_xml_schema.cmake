@@ -1,20 +1,21 @@
-# cmake -DXMLLINT=... -DSCHEMA=... -DROOTS=dir;... [-DEXTRA=file;...] [-DINVALID=file] -P ...
-# Validates every *.xml under ROOTS whose root element is <system> (other XML, e.g. robot
+# cmake -DXMLLINT=... -DSCHEMA=... -DELEMENT=name -DROOTS=dir;... [-DEXTRA=file;...]
+#       [-DINVALID=file] -P check_xml_schema.cmake
+# Validates every *.xml under ROOTS whose root element is <ELEMENT> (other XML, e.g. robot
 # descriptions, is skipped), plus the EXTRA files, with xmllint --schema; INVALID must fail.
 set(files ${EXTRA})
 foreach(root IN LISTS ROOTS)
   file(GLOB_RECURSE found "${root}/*.xml")
   foreach(f IN LISTS found)
-    # a <system> element near the top (comments may hold anything, even "--")
+    # the element near the top (comments may hold anything, even "--")
     file(READ "${f}" head LIMIT 8192)
-    if(head MATCHES "\n<system[ \t\r\n/>]")
+    if(head MATCHES "\n<${ELEMENT}[ \t\r\n/>]")
       list(APPEND files "${f}")
     endif()
   endforeach()
 endforeach()
 list(LENGTH files count)
 if(count EQUAL 0)
-  message(FATAL_ERROR "no system XML files found under ${ROOTS}")
+  message(FATAL_ERROR "no <${ELEMENT}> XML files found under ${ROOTS}")
 endif()
 set(failed 0)
 foreach(f IN LISTS files)
@@ -36,5 +37,5 @@ if(INVALID)
   endif()
 endif()
 if(failed)
-  message(FATAL_ERROR "system XML schema check failed")
+  message(FATAL_ERROR "<${ELEMENT}> XML schema check failed")
 endif()
