@@ -11,6 +11,7 @@
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_builder.hpp"
 #include "stride/cosim/system_structure.hpp"
+#include "stride/remote/remote_placement.hpp"
 #include "stride/suite/runner.hpp"
 #include "stride/suite/suite.hpp"
 
@@ -67,6 +68,10 @@ int run(const run_arguments& args, const run_extension& extension) {
   options.build.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
   options.build.fmu_debug_logging = args.fmu_debug_log;
   options.build.threads = args.threads;
+  remote::timeouts limits;
+  limits.connect = std::chrono::milliseconds(static_cast<long>(args.worker_timeout * 1000));
+  // joins the DDS domain only when a component has a worker
+  options.build.placements.push_back(std::make_shared<remote::remote_placement>(args.dds, limits));
   options.record_signals = args.signals;
   if (args.record_interval) {
     try {

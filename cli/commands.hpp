@@ -11,6 +11,7 @@
 
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_structure.hpp"
+#include "stride/remote/settings.hpp"
 #include "stride/suite/assertions.hpp"
 
 namespace stride::cli {
@@ -28,6 +29,8 @@ struct run_arguments {
   std::vector<std::string> signals;  ///< --signals: record these instead of the system's
   std::optional<std::string> record_interval;
   std::filesystem::path save_reference;  ///< --save-reference: a copy of the results CSV
+  remote::dds_settings dds;              ///< where components with a worker are looked for
+  double worker_timeout = 10;            ///< seconds to wait for a worker to appear
 };
 
 struct validate_arguments {

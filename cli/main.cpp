@@ -12,6 +12,7 @@
 #include "stride/study/run_hooks.hpp"
 #include "stride/study/suite_assertions.hpp"
 #include "stride/suite/assertions.hpp"
+#include "workers.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"stride: FMI 2.0 co-simulation of FMUs wired by a system XML"};
@@ -54,6 +55,11 @@ int main(int argc, char** argv) {
                   "Also write the results CSV to this file: a reference for `stride test`");
   run->add_flag("--no-plots", run_args.no_plots,
                 "Do not write figures after a learner run (see `stride plot`)");
+  stride::cli::add_dds_options(*run, run_args.dds);
+  run->add_option("--worker-timeout", run_args.worker_timeout,
+                  "Seconds to wait for a worker named in the system to appear")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 3600.0));
 
   std::string inspect_file;
   auto* inspect = app.add_subcommand("inspect", "Show an FMU's model description");
@@ -99,6 +105,11 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   plot->add_flag("--quiet,-q", plot_quiet, "Print nothing");
 
+  stride::cli::worker_arguments worker_args;
+  auto* worker = stride::cli::add_worker_command(app, worker_args);
+  stride::cli::workers_arguments workers_args;
+  auto* workers = stride::cli::add_workers_command(app, workers_args);
+
   stride::cli::calibrate_arguments calibrate_args;
   auto* calibrate = stride::cli::add_calibrate_command(app, calibrate_args);
 
@@ -128,6 +139,8 @@ int main(int argc, char** argv) {
       return stride::cli::test(test_args, kinds);
     }
     if (*calibrate) return stride::cli::calibrate(calibrate_args);
+    if (*worker) return stride::cli::worker(worker_args);
+    if (*workers) return stride::cli::workers(workers_args);
     if (*plot) return stride::study::plot(plot_dir, plot_quiet);
     if (*validate) {
       validate_args.file = validate_file;

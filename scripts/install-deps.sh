@@ -7,7 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config make
   libode-dev liburdfdom-dev libeigen3-dev libceres-dev
   libtinyxml2-dev libzip-dev zipcmp zipmerge ziptool zip unzip
-  libcli11-dev
+  libcli11-dev cyclonedds-dev cyclonedds-tools libssl-dev iproute2
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3
 )

@@ -1,0 +1,194 @@
+#include "client.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <stdexcept>
+#include <thread>
+
+namespace stride::remote {
+
+namespace {
+
+// a run id no other run on the network will have: host, process and 64 random bits
+std::string new_run_id() {
+  char host[64] = {};
+  ::gethostname(host, sizeof host - 1);
+  std::random_device rd;
+  const std::uint64_t r = (std::uint64_t{rd()} << 32) ^ rd();
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s-%ld-%016llx", host, static_cast<long>(::getpid()),
+                static_cast<unsigned long long>(r));
+  return buf;
+}
+
+reply_data copy_reply(const stride_remote_reply& r) {
+  reply_data out;
+  out.result = static_cast<status>(r.status);
+  out.message = r.message != nullptr ? r.message : "";
+  const auto& v = r.data;
+  out.values.reals.assign(v.reals._buffer, v.reals._buffer + v.reals._length);
+  out.values.integers.assign(v.integers._buffer, v.integers._buffer + v.integers._length);
+  out.values.booleans.assign(v.booleans._buffer, v.booleans._buffer + v.booleans._length);
+  for (std::uint32_t i = 0; i < v.strings._length; ++i) {
+    out.values.strings.emplace_back(v.strings._buffer[i] != nullptr ? v.strings._buffer[i] : "");
+  }
+  out.blob = get_blob(r.blob);
+  for (std::uint32_t i = 0; i < r.log._length; ++i) {
+    const auto& l = r.log._buffer[i];
+    const int level = std::clamp(l.level, 0, static_cast<int>(cosim::log_level::error));
+    out.log.push_back({static_cast<cosim::log_level>(level), l.category ? l.category : "",
+                       l.message ? l.message : ""});
+  }
+  return out;
+}
+
+}  // namespace
+
+client::client(const dds_settings& settings, const timeouts& limits)
+    : settings_(settings),
+      limits_(limits),
+      run_(new_run_id()),
+      participant_(dds::make_participant(settings)),
+      topics_(participant_.get()) {
+  dds_qos_t* qos = dds::announcement_qos(std::chrono::milliseconds(0));
+  announcements_ = dds::entity(
+      dds::check(dds_create_reader(participant_.get(), topics_.worker_info.get(), qos, nullptr),
+                 "worker announcements reader"));
+  dds_delete_qos(qos);
+  reply_subscriber_ = dds::make_subscriber(participant_.get(), run_partition(run_));
+  qos = dds::reliable_qos();
+  // replies are handed over on DDS's receive thread: one thread switch less per call than a
+  // waitset
+  dds_listener_t* listener = dds_create_listener(this);
+  dds_lset_data_available_arg(
+      listener, [](dds_entity_t, void* self) { static_cast<client*>(self)->take_replies(); }, this,
+      true);
+  replies_ = dds::entity(
+      dds::check(dds_create_reader(reply_subscriber_.get(), topics_.reply.get(), qos, listener),
+                 "reply reader"));
+  dds_delete_listener(listener);
+  dds_delete_qos(qos);
+}
+
+client::~client() {
+  stride_remote_request r{};
+  r.op = static_cast<std::int32_t>(op::end_run);
+  r.run = const_cast<char*>(run_.c_str());
+  r.component = const_cast<char*>("");
+  r.text = const_cast<char*>("");
+  for (auto& [name, endpoints] : workers_) {
+    r.seq = ++next_seq_;
+    dds_write(endpoints.second.get(), &r);  // best effort: the writer lingers until delivered
+  }
+  replies_.reset();  // no listener call after this
+}
+
+dds_instance_handle_t client::announcement_of(const std::string& worker) {
+  dds_instance_handle_t writer = 0;
+  dds::read_all<stride_remote_worker_info>(
+      announcements_.get(), [&](const stride_remote_worker_info& w, const dds_sample_info_t& i) {
+        if (i.valid_data && w.name != nullptr && worker == w.name &&
+            i.instance_state == DDS_IST_ALIVE) {
+          writer = i.publication_handle;
+        }
+      });
+  return writer;
+}
+
+bool client::alive(const std::string& worker) {
+  return announcement_of(worker) != 0;
+}
+
+dds_entity_t client::connect(const std::string& worker) {
+  if (const auto it = workers_.find(worker); it != workers_.end()) return it->second.second.get();
+  using clock = std::chrono::steady_clock;
+  const auto until = clock::now() + limits_.connect;
+  const auto seconds = std::to_string(limits_.connect.count() / 1000.0);
+  dds_instance_handle_t announcement = 0;
+  while ((announcement = announcement_of(worker)) == 0) {
+    if (clock::now() >= until) {
+      throw std::runtime_error("worker '" + worker + "' did not appear on DDS domain " +
+                               std::to_string(settings_.domain) + " within " +
+                               seconds.substr(0, seconds.find('.') + 2) +
+                               " s (start it with `stride worker --name " + worker + " --domain " +
+                               std::to_string(settings_.domain) + "`)");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  dds::entity publisher = dds::make_publisher(participant_.get(), worker_partition(worker));
+  dds_qos_t* qos = dds::reliable_qos();
+  dds::entity writer(
+      dds::check(dds_create_writer(publisher.get(), topics_.request.get(), qos, nullptr),
+                 "request writer for worker '" + worker + "'"));
+  dds_delete_qos(qos);
+  const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - clock::now());
+  if (!dds::wait_for_reader(writer.get(), std::max(left, std::chrono::milliseconds(1000)))) {
+    throw std::runtime_error("worker '" + worker + "' is announced on DDS domain " +
+                             std::to_string(settings_.domain) + " but does not take requests");
+  }
+  // the worker's replies reach this run only once its reply writer has matched our reader
+  const dds_instance_handle_t participant = dds::participant_of(announcements_.get(), announcement);
+  while (!dds::matches_writer_of(replies_.get(), participant)) {
+    if (clock::now() >= until + std::chrono::milliseconds(1000)) {
+      throw std::runtime_error("worker '" + worker + "' is announced on DDS domain " +
+                               std::to_string(settings_.domain) + " but its replies do not arrive");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  const dds_entity_t w = writer.get();
+  workers_.emplace(worker, std::make_pair(std::move(publisher), std::move(writer)));
+  return w;
+}
+
+void client::take_replies() {
+  std::map<std::uint64_t, reply_data> got;
+  dds::take_all<stride_remote_reply>(replies_.get(),
+                                     [&](const stride_remote_reply& r, const dds_sample_info_t&) {
+                                       // the partition keeps other runs out; the check keeps out a
+                                       // run with a reused name
+                                       if (r.run != nullptr && run_ == r.run)
+                                         got.emplace(r.seq, copy_reply(r));
+                                     });
+  if (got.empty()) return;
+  std::lock_guard lock(mutex_);
+  arrived_.merge(got);
+  arrivals_.fetch_add(1, std::memory_order_release);
+  arrived_cv_.notify_all();
+}
+
+reply_data client::call(dds_entity_t writer, const std::string& worker, stride_remote_request& r) {
+  r.run = const_cast<char*>(run_.c_str());
+  r.seq = ++next_seq_;
+  const std::uint64_t seq = r.seq;
+  const std::uint64_t seen = arrivals_.load(std::memory_order_acquire);
+  dds::check(dds_write(writer, &r), "request to worker '" + worker + "'");
+  // a short step's reply comes back within tens of microseconds: watching for it saves the
+  // wake-up of a sleeping thread, which costs as much again on a virtual machine
+  const auto spin_until = std::chrono::steady_clock::now() + limits_.spin;
+  while (arrivals_.load(std::memory_order_acquire) == seen &&
+         std::chrono::steady_clock::now() < spin_until) {
+  }
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    if (const auto it = arrived_.find(seq); it != arrived_.end()) {
+      reply_data out = std::move(it->second);
+      arrived_.erase(it);
+      return out;
+    }
+    if (arrived_cv_.wait_for(lock, limits_.poll) == std::cv_status::timeout &&
+        arrived_.find(seq) == arrived_.end()) {
+      lock.unlock();
+      const bool still_there = alive(worker);
+      lock.lock();
+      if (!still_there) {
+        throw std::runtime_error("worker '" + worker + "' is gone (its liveliness on DDS domain " +
+                                 std::to_string(settings_.domain) + " lapsed)");
+      }
+    }
+  }
+}
+
+}  // namespace stride::remote

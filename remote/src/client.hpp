@@ -1,0 +1,81 @@
+// The orchestrator's end of the protocol: one per run. It finds workers on the domain, sends
+// requests and hands each caller its reply (callers on several threads may wait at once). A
+// worker whose liveliness lapses fails the calls waiting on it instead of leaving them hanging.
+#ifndef STRIDE_REMOTE_CLIENT_HPP
+#define STRIDE_REMOTE_CLIENT_HPP
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "dds.hpp"
+#include "protocol.hpp"
+#include "stride/cosim/log.hpp"
+#include "stride/remote/settings.hpp"
+
+namespace stride::remote {
+
+/// A reply, copied out of DDS.
+struct reply_data {
+  status result = status::ok;
+  std::string message;
+  cosim::value_block values;
+  std::vector<std::byte> blob;
+  struct log_line {
+    cosim::log_level level;
+    std::string category;
+    std::string message;
+  };
+  std::vector<log_line> log;  ///< what the component logged meanwhile
+};
+
+class client {
+ public:
+  client(const dds_settings& settings, const timeouts& limits);
+  /// Tells every connected worker that the run is over (its instances go away).
+  ~client();
+  client(const client&) = delete;
+  client& operator=(const client&) = delete;
+
+  const std::string& run_id() const noexcept { return run_; }
+  int domain() const noexcept { return settings_.domain; }
+
+  /// Waits for `worker` to be announced and its request path to open; returns the writer to
+  /// address it with. Connecting twice returns the same writer.
+  /// \throws std::runtime_error naming the worker and the domain on timeout.
+  dds_entity_t connect(const std::string& worker);
+
+  /// Sends `r` (its run and sequence number are filled in here) and waits for the reply.
+  /// \throws std::runtime_error when the worker's liveliness lapses meanwhile.
+  reply_data call(dds_entity_t writer, const std::string& worker, stride_remote_request& r);
+
+ private:
+  // the writer handle of the worker's live announcement, 0 when it has none
+  dds_instance_handle_t announcement_of(const std::string& worker);
+  bool alive(const std::string& worker);
+  void take_replies();  // DDS's receive thread, when replies arrive
+
+  dds_settings settings_;
+  timeouts limits_;
+  std::string run_;
+  dds::entity participant_;
+  dds::topics topics_;
+  dds::entity announcements_;  // reader of worker_info
+  dds::entity reply_subscriber_;
+  dds::entity replies_;                                                 // reader
+  std::map<std::string, std::pair<dds::entity, dds::entity>> workers_;  // publisher, writer
+
+  std::atomic<std::uint64_t> next_seq_{0};
+  std::mutex mutex_;
+  std::condition_variable arrived_cv_;
+  std::map<std::uint64_t, reply_data> arrived_;
+  std::atomic<std::uint64_t> arrivals_{0};  // batches of replies taken so far
+};
+
+}  // namespace stride::remote
+
+#endif  // STRIDE_REMOTE_CLIENT_HPP

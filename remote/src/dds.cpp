@@ -1,0 +1,143 @@
+#include "dds.hpp"
+
+#include <cstdlib>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "stride_remote.h"
+
+namespace stride::remote::dds {
+
+namespace fs = std::filesystem;
+
+dds_return_t check(dds_return_t rc, const std::string& what) {
+  if (rc < 0) throw std::runtime_error(what + ": " + dds_strretcode(rc));
+  return rc;
+}
+
+namespace {
+
+// the configuration text each domain of this process was set up with
+std::mutex g_domains_mutex;
+std::map<int, std::string> g_domains;
+
+std::string config_text(const dds_settings& s) {
+  if (!s.config_file.empty()) {
+    if (!fs::is_regular_file(s.config_file)) {
+      throw std::runtime_error("DDS configuration " + s.config_file.string() + " not found");
+    }
+    return "file://" + fs::absolute(s.config_file).string();
+  }
+  if (const char* uri = std::getenv("CYCLONEDDS_URI"); uri != nullptr && *uri != '\0') return {};
+  return loopback_config();
+}
+
+}  // namespace
+
+entity make_participant(const dds_settings& settings) {
+  if (settings.domain < 0 || settings.domain > 230) {
+    // the port numbers Cyclone derives from the domain run out above 232
+    throw std::runtime_error("DDS domain " + std::to_string(settings.domain) +
+                             " is out of range (0..230)");
+  }
+  const std::string config = config_text(settings);
+  {
+    std::lock_guard lock(g_domains_mutex);
+    const auto it = g_domains.find(settings.domain);
+    if (it == g_domains.end()) {
+      if (!config.empty()) {
+        // the domain entity lives as long as the process: participants come and go on it
+        check(dds_create_domain(static_cast<dds_domainid_t>(settings.domain), config.c_str()),
+              "cannot set up DDS domain " + std::to_string(settings.domain));
+      }
+      g_domains[settings.domain] = config;
+    } else if (it->second != config) {
+      throw std::runtime_error("DDS domain " + std::to_string(settings.domain) +
+                               " is already set up with another configuration in this process");
+    }
+  }
+  return entity(
+      check(dds_create_participant(static_cast<dds_domainid_t>(settings.domain), nullptr, nullptr),
+            "cannot join DDS domain " + std::to_string(settings.domain)));
+}
+
+topics::topics(dds_entity_t participant) {
+  dds_qos_t* qos = reliable_qos();
+  request = entity(check(dds_create_topic(participant, &stride_remote_request_desc,
+                                          "stride_remote_request", qos, nullptr),
+                         "topic stride_remote_request"));
+  reply = entity(check(
+      dds_create_topic(participant, &stride_remote_reply_desc, "stride_remote_reply", qos, nullptr),
+      "topic stride_remote_reply"));
+  dds_delete_qos(qos);
+  qos = announcement_qos(std::chrono::milliseconds(0));
+  worker_info = entity(check(dds_create_topic(participant, &stride_remote_worker_info_desc,
+                                              "stride_remote_worker_info", qos, nullptr),
+                             "topic stride_remote_worker_info"));
+  dds_delete_qos(qos);
+}
+
+dds_qos_t* reliable_qos() {
+  dds_qos_t* qos = dds_create_qos();
+  dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(10));
+  dds_qset_history(qos, DDS_HISTORY_KEEP_ALL, 0);
+  return qos;
+}
+
+dds_qos_t* announcement_qos(std::chrono::milliseconds lease) {
+  dds_qos_t* qos = dds_create_qos();
+  dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
+  dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
+  dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+  if (lease.count() > 0)
+    dds_qset_liveliness(qos, DDS_LIVELINESS_AUTOMATIC, DDS_MSECS(lease.count()));
+  return qos;
+}
+
+entity make_publisher(dds_entity_t participant, const std::string& partition) {
+  dds_qos_t* qos = dds_create_qos();
+  dds_qset_partition1(qos, partition.c_str());
+  const dds_entity_t p = dds_create_publisher(participant, qos, nullptr);
+  dds_delete_qos(qos);
+  return entity(check(p, "publisher for partition " + partition));
+}
+
+entity make_subscriber(dds_entity_t participant, const std::string& partition) {
+  dds_qos_t* qos = dds_create_qos();
+  dds_qset_partition1(qos, partition.c_str());
+  const dds_entity_t s = dds_create_subscriber(participant, qos, nullptr);
+  dds_delete_qos(qos);
+  return entity(check(s, "subscriber for partition " + partition));
+}
+
+bool wait_for_reader(dds_entity_t writer, std::chrono::milliseconds timeout) {
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    dds_publication_matched_status_t st{};
+    check(dds_get_publication_matched_status(writer, &st), "publication status");
+    if (st.current_count > 0) return true;
+    if (std::chrono::steady_clock::now() >= until) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+dds_instance_handle_t participant_of(dds_entity_t reader, dds_instance_handle_t publication) {
+  dds_builtintopic_endpoint_t* e = dds_get_matched_publication_data(reader, publication);
+  if (e == nullptr) return 0;
+  const dds_instance_handle_t p = e->participant_instance_handle;
+  dds_builtintopic_free_endpoint(e);
+  return p;
+}
+
+bool matches_writer_of(dds_entity_t reader, dds_instance_handle_t participant) {
+  dds_instance_handle_t handles[256];
+  const dds_return_t n = dds_get_matched_publications(reader, handles, 256);
+  for (dds_return_t i = 0; i < n && i < 256; ++i) {
+    if (participant_of(reader, handles[i]) == participant) return true;
+  }
+  return false;
+}
+
+}  // namespace stride::remote::dds

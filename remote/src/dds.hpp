@@ -1,0 +1,110 @@
+// A thin C++ layer over Cyclone DDS's C API (Debian ships no C++ binding): entities that delete
+// themselves, the domain set up from the project's configuration, the QoS the protocol uses, and
+// typed take/write of the generated wire types.
+#ifndef STRIDE_REMOTE_DDS_HPP
+#define STRIDE_REMOTE_DDS_HPP
+
+#include <dds/dds.h>
+
+#include <chrono>
+#include <functional>
+#include <string>
+#include <utility>
+
+#include "stride/remote/settings.hpp"
+
+namespace stride::remote::dds {
+
+/// A DDS entity deleted (with its children) when this goes away.
+class entity {
+ public:
+  entity() = default;
+  explicit entity(dds_entity_t e) : e_(e) {}
+  ~entity() { reset(); }
+  entity(const entity&) = delete;
+  entity& operator=(const entity&) = delete;
+  entity(entity&& o) noexcept : e_(std::exchange(o.e_, 0)) {}
+  entity& operator=(entity&& o) noexcept {
+    if (this != &o) {
+      reset();
+      e_ = std::exchange(o.e_, 0);
+    }
+    return *this;
+  }
+  dds_entity_t get() const noexcept { return e_; }
+  explicit operator bool() const noexcept { return e_ > 0; }
+  void reset() noexcept {
+    if (e_ > 0) dds_delete(e_);
+    e_ = 0;
+  }
+
+ private:
+  dds_entity_t e_ = 0;
+};
+
+/// Throws std::runtime_error with `what` and DDS's text for `rc` when `rc` is negative.
+dds_return_t check(dds_return_t rc, const std::string& what);
+
+/// The participant of this process on the settings' domain. The first call in a process sets the
+/// domain up (the configuration file, else CYCLONEDDS_URI, else the loopback configuration);
+/// later calls with another configuration for the same domain are an error.
+entity make_participant(const dds_settings& settings);
+
+/// The three topics of the protocol on one participant.
+struct topics {
+  entity worker_info;
+  entity request;
+  entity reply;
+  explicit topics(dds_entity_t participant);
+};
+
+/// QoS of the request and reply paths: reliable, every sample kept until delivered.
+dds_qos_t* reliable_qos();
+/// QoS of worker announcements: reliable, the last one kept for late joiners; `lease` > 0 makes
+/// the writer's liveliness automatic with that lease.
+dds_qos_t* announcement_qos(std::chrono::milliseconds lease);
+
+/// A publisher or subscriber limited to one partition.
+entity make_publisher(dds_entity_t participant, const std::string& partition);
+entity make_subscriber(dds_entity_t participant, const std::string& partition);
+
+/// Waits until `writer` has at least one matched reader. Returns false on timeout.
+bool wait_for_reader(dds_entity_t writer, std::chrono::milliseconds timeout);
+
+/// The participant (instance handle) of the writer `publication` that `reader` matched, or 0.
+dds_instance_handle_t participant_of(dds_entity_t reader, dds_instance_handle_t publication);
+/// Whether `reader` matches a writer of the participant `participant`.
+bool matches_writer_of(dds_entity_t reader, dds_instance_handle_t participant);
+
+/// Takes every available sample of `reader` and calls `f(sample, info)` for each valid one.
+template <class T, class F>
+void take_all(dds_entity_t reader, F&& f) {
+  constexpr std::size_t k_batch = 16;
+  void* samples[k_batch] = {};
+  dds_sample_info_t infos[k_batch];
+  for (;;) {
+    const dds_return_t n = dds_take(reader, samples, infos, k_batch, k_batch);
+    if (n <= 0) return;
+    for (dds_return_t i = 0; i < n; ++i) {
+      if (infos[i].valid_data) f(*static_cast<const T*>(samples[i]), infos[i]);
+    }
+    dds_return_loan(reader, samples, n);
+    if (static_cast<std::size_t>(n) < k_batch) return;
+  }
+}
+
+/// Reads (without taking) every sample of `reader`, valid or not: instance states included.
+template <class T, class F>
+void read_all(dds_entity_t reader, F&& f) {
+  constexpr std::size_t k_batch = 64;
+  void* samples[k_batch] = {};
+  dds_sample_info_t infos[k_batch];
+  const dds_return_t n = dds_read(reader, samples, infos, k_batch, k_batch);
+  if (n <= 0) return;
+  for (dds_return_t i = 0; i < n; ++i) f(*static_cast<const T*>(samples[i]), infos[i]);
+  dds_return_loan(reader, samples, n);
+}
+
+}  // namespace stride::remote::dds
+
+#endif  // STRIDE_REMOTE_DDS_HPP

@@ -1,0 +1,371 @@
+#include "stride/remote/worker.hpp"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "dds.hpp"
+#include "protocol.hpp"
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/run.hpp"
+
+namespace stride::remote {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr auto k_liveliness_lease = std::chrono::milliseconds(1000);
+constexpr auto k_poll = std::chrono::milliseconds(100);
+
+std::string host_name() {
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  return host;
+}
+
+std::vector<worker_description> read_announcements(dds_entity_t reader) {
+  std::vector<worker_description> out;
+  dds::read_all<stride_remote_worker_info>(reader, [&](const stride_remote_worker_info& w,
+                                                       const dds_sample_info_t& i) {
+    if (!i.valid_data || i.instance_state != DDS_IST_ALIVE) return;
+    out.push_back({w.name ? w.name : "", w.host ? w.host : "", w.pid, w.version ? w.version : ""});
+  });
+  return out;
+}
+
+// one component instance and what its steps exchange
+struct instance {
+  std::unique_ptr<cosim::component> component;
+  cosim::variable_refs inputs;
+  cosim::variable_refs outputs;
+  cosim::value_block in;
+  cosim::value_block out;
+};
+
+// what the worker keeps for one run: its instances, and whose requests they are
+struct run_state {
+  dds_instance_handle_t orchestrator = 0;  // the request writer of the run's orchestrator
+  std::map<std::string, instance> instances;
+};
+
+class host {
+ public:
+  explicit host(const worker_options& o)
+      : options_(o),
+        name_(o.name.empty() ? host_name() + "-" + std::to_string(::getpid()) : o.name),
+        participant_(dds::make_participant(o.dds)),
+        topics_(participant_.get()),
+        cache_("stride-worker-") {
+    check_name_is_free();
+    request_subscriber_ = dds::make_subscriber(participant_.get(), worker_partition(name_));
+    dds_qos_t* qos = dds::reliable_qos();
+    // requests are served on DDS's receive thread: no thread switch between arrival and step
+    dds_listener_t* listener = dds_create_listener(this);
+    dds_lset_data_available_arg(
+        listener, [](dds_entity_t, void* self) { static_cast<host*>(self)->take_requests(); }, this,
+        true);
+    requests_ = dds::entity(dds::check(
+        dds_create_reader(request_subscriber_.get(), topics_.request.get(), qos, listener),
+        "request reader"));
+    dds_delete_listener(listener);
+    dds_delete_qos(qos);
+    // one writer for the replies of every run: made now, so that it has matched the reply
+    // reader of a run before the run's first request arrives (the orchestrator waits for that)
+    reply_publisher_ = dds::make_publisher(participant_.get(), k_every_run_partition);
+    qos = dds::reliable_qos();
+    replies_ = dds::entity(
+        dds::check(dds_create_writer(reply_publisher_.get(), topics_.reply.get(), qos, nullptr),
+                   "reply writer"));
+    dds_delete_qos(qos);
+
+    qos = dds::announcement_qos(k_liveliness_lease);
+    announcer_ = dds::entity(
+        dds::check(dds_create_writer(participant_.get(), topics_.worker_info.get(), qos, nullptr),
+                   "announcement writer"));
+    dds_delete_qos(qos);
+    const std::string h = host_name();
+    const std::string version(cosim::version());
+    stride_remote_worker_info info{const_cast<char*>(name_.c_str()), const_cast<char*>(h.c_str()),
+                                   static_cast<std::int64_t>(::getpid()),
+                                   const_cast<char*>(version.c_str())};
+    dds::check(dds_write(announcer_.get(), &info), "announcement");
+  }
+
+  const std::string& name() const { return name_; }
+
+  ~host() { requests_.reset(); }  // no listener call after this
+
+  // the requests themselves are served by take_requests; this thread tidies up
+  void serve(const std::atomic<bool>& stop) {
+    while (!stop.load()) {
+      std::this_thread::sleep_for(k_poll);
+      std::lock_guard lock(mutex_);
+      drop_vanished_runs();
+    }
+  }
+
+ private:
+  void take_requests() {
+    std::lock_guard lock(mutex_);
+    dds::take_all<stride_remote_request>(
+        requests_.get(),
+        [&](const stride_remote_request& r, const dds_sample_info_t& i) { handle(r, i); });
+  }
+
+  void check_name_is_free() {
+    dds_qos_t* qos = dds::announcement_qos(std::chrono::milliseconds(0));
+    dds::entity reader(
+        dds::check(dds_create_reader(participant_.get(), topics_.worker_info.get(), qos, nullptr),
+                   "announcement reader"));
+    dds_delete_qos(qos);
+    // announcements of workers already there arrive within discovery (milliseconds here)
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    for (const auto& w : read_announcements(reader.get())) {
+      if (w.name == name_) {
+        throw std::runtime_error("a worker named '" + name_ + "' is already on DDS domain " +
+                                 std::to_string(options_.dds.domain) + " (host " + w.host +
+                                 ", pid " + std::to_string(w.pid) + ")");
+      }
+    }
+  }
+
+  void log(const std::string& line) {
+    if (options_.log == nullptr) return;
+    std::fprintf(options_.log, "worker %s: %s\n", name_.c_str(), line.c_str());
+    std::fflush(options_.log);
+  }
+
+  run_state& run_for(const std::string& id, dds_instance_handle_t orchestrator) {
+    const auto [it, fresh] = runs_.try_emplace(id);
+    if (fresh) {
+      it->second.orchestrator = orchestrator;
+      log("run " + id + " begins");
+    }
+    return it->second;
+  }
+
+  void end_run(const std::string& id, const char* why) {
+    if (runs_.erase(id) > 0) log("run " + id + " ends (" + why + ")");
+  }
+
+  // a run whose orchestrator went away without saying so: its instances go
+  void drop_vanished_runs() {
+    dds_instance_handle_t handles[256];
+    const dds_return_t n = dds_get_matched_publications(requests_.get(), handles, 256);
+    for (auto it = runs_.begin(); it != runs_.end();) {
+      bool present = false;
+      for (dds_return_t i = 0; i < n && i < 256; ++i)
+        present |= handles[i] == it->second.orchestrator;
+      if (present) {
+        ++it;
+      } else {
+        log("run " + it->first + " ends (its orchestrator is gone)");
+        it = runs_.erase(it);
+      }
+    }
+  }
+
+  instance& find(run_state& rs, const char* component) {
+    const auto it = rs.instances.find(component);
+    if (it == rs.instances.end()) {
+      throw std::runtime_error(std::string("no instance '") + component + "' on this worker");
+    }
+    return it->second;
+  }
+
+  // loads a shipped archive (or says it needs it)
+  status load(const stride_remote_request& r) {
+    const std::string hash = r.text;
+    if (fmus_.count(hash) > 0) return status::ok;
+    if (r.blob._length == 0) return status::need_archive;
+    const std::vector<std::byte> archive = get_blob(r.blob);
+    if (content_hash(archive) != hash) {
+      throw std::runtime_error("the archive does not have the content hash it was sent with");
+    }
+    const fs::path file = cache_.path() / (hash + ".fmu");
+    {
+      std::ofstream out(file, std::ios::binary);
+      out.write(reinterpret_cast<const char*>(archive.data()),
+                static_cast<std::streamsize>(archive.size()));
+      if (!out) throw std::runtime_error("cannot write " + file.string());
+    }
+    fmus_[hash] = cosim::fmu::load(file, options_.import);
+    log("loaded " + fmus_[hash]->model_description().model_name + " (" + hash.substr(0, 12) + ")");
+    return status::ok;
+  }
+
+  void handle(const stride_remote_request& r, const dds_sample_info_t& info) {
+    const std::string run_id = r.run != nullptr ? r.run : "";
+    const auto o = static_cast<op>(r.op);
+    if (o == op::end_run) {
+      end_run(run_id, "its orchestrator said so");
+      return;
+    }
+    run_state& rs = run_for(run_id, info.publication_handle);
+    stride_remote_reply reply{};
+    reply.run = r.run;
+    reply.seq = r.seq;
+    reply.message = const_cast<char*>("");
+    std::string message;
+    wire_storage storage;
+    std::vector<std::byte> blob;
+    logged_.clear();
+    try {
+      reply.status = static_cast<std::int32_t>(serve_one(rs, r, reply, storage, blob));
+    } catch (const std::exception& e) {
+      message = e.what();
+      reply = stride_remote_reply{};
+      reply.run = r.run;
+      reply.seq = r.seq;
+      reply.status = static_cast<std::int32_t>(status::error);
+      reply.message = message.data();
+    }
+    std::vector<stride_remote_log_line> lines;
+    for (const auto& l : logged_) {
+      lines.push_back({static_cast<std::int32_t>(l.level), const_cast<char*>(l.category.c_str()),
+                       const_cast<char*>(l.message.c_str())});
+    }
+    reply.log._length = reply.log._maximum = static_cast<std::uint32_t>(lines.size());
+    reply.log._buffer = lines.data();
+    reply.log._release = false;
+    dds_write(replies_.get(), &reply);
+  }
+
+  status serve_one(run_state& rs, const stride_remote_request& r, stride_remote_reply& reply,
+                   wire_storage& storage, std::vector<std::byte>& blob) {
+    const auto o = static_cast<op>(r.op);
+    switch (o) {
+      case op::load:
+        return load(r);
+      case op::instantiate: {
+        const auto f = fmus_.find(r.text);
+        if (f == fmus_.end()) throw std::runtime_error("no FMU with that content hash is loaded");
+        if (rs.instances.count(r.component) > 0) {
+          throw std::runtime_error(std::string("instance '") + r.component + "' exists already");
+        }
+        cosim::instance_options io;
+        io.logging_on = r.logging;
+        // what the component logs goes back with the reply of the request being served
+        io.log = [this](cosim::log_level level, std::string_view, std::string_view category,
+                        std::string_view message) {
+          logged_.push_back({level, std::string(category), std::string(message)});
+        };
+        rs.instances[r.component].component = f->second->instantiate(r.component, io);
+        return status::ok;
+      }
+      case op::setup: {
+        instance& i = find(rs, r.component);
+        std::optional<cosim::time_point> stop;
+        if (r.dt_ns >= 0) stop = cosim::time_point(cosim::duration(r.dt_ns));
+        i.component->setup(cosim::time_point(cosim::duration(r.t_ns)), stop);
+        return status::ok;
+      }
+      case op::set_values: {
+        instance& i = find(rs, r.component);
+        const cosim::variable_refs refs = get_refs(r.more);
+        cosim::value_block v;
+        get_values(r.data, refs, v);
+        i.component->set_values(refs, v);
+        return status::ok;
+      }
+      case op::get_values: {
+        instance& i = find(rs, r.component);
+        const cosim::variable_refs refs = get_refs(r.data);
+        i.component->get_values(refs, i.out);
+        put_values(i.out, reply.data, storage);
+        return status::ok;
+      }
+      case op::expose: {
+        instance& i = find(rs, r.component);
+        i.inputs = get_refs(r.data);
+        i.outputs = get_refs(r.more);
+        i.component->expose(i.inputs, i.outputs);
+        i.out.resize_for(i.outputs);
+        return status::ok;
+      }
+      case op::enter_initialization:
+        find(rs, r.component).component->enter_initialization();
+        return status::ok;
+      case op::exit_initialization:
+        find(rs, r.component).component->exit_initialization();
+        return status::ok;
+      case op::step: {
+        instance& i = find(rs, r.component);
+        get_values(r.data, i.inputs, i.in);
+        const auto result = i.component->step(cosim::time_point(cosim::duration(r.t_ns)),
+                                              cosim::duration(r.dt_ns), i.in, i.out);
+        if (result == cosim::step_result::terminate) return status::terminate;
+        put_values(i.out, reply.data, storage);
+        return status::ok;
+      }
+      case op::save_state:
+        blob = find(rs, r.component).component->save_state();
+        put_blob(blob, reply.blob);
+        return status::ok;
+      case op::restore_state:
+        find(rs, r.component).component->restore_state(get_blob(r.blob));
+        return status::ok;
+      case op::terminate:
+        find(rs, r.component).component->terminate();
+        return status::ok;
+      case op::free_instance:
+        rs.instances.erase(r.component);
+        return status::ok;
+      case op::end_run:
+        break;
+    }
+    throw std::runtime_error("unknown operation " + std::to_string(r.op));
+  }
+
+  worker_options options_;
+  std::string name_;
+  dds::entity participant_;
+  dds::topics topics_;
+  cosim::temp_dir cache_;  // shipped archives, by content hash
+  dds::entity request_subscriber_;
+  dds::entity requests_;
+  dds::entity reply_publisher_;
+  dds::entity replies_;  // writer
+  dds::entity announcer_;
+  std::mutex mutex_;  // runs_ and fmus_: the receive thread serves, the main thread tidies
+  std::map<std::string, std::shared_ptr<cosim::fmu>> fmus_;  // content hash → imported FMU
+  std::map<std::string, run_state> runs_;
+  struct log_entry {
+    cosim::log_level level;
+    std::string category;
+    std::string message;
+  };
+  std::vector<log_entry> logged_;  // by the components, while serving the current request
+};
+
+}  // namespace
+
+void serve(const worker_options& options, const std::atomic<bool>& stop) {
+  host h(options);
+  if (options.log != nullptr) {
+    std::fprintf(options.log, "worker %s ready on DDS domain %d (pid %ld)\n", h.name().c_str(),
+                 options.dds.domain, static_cast<long>(::getpid()));
+    std::fflush(options.log);
+  }
+  h.serve(stop);
+}
+
+std::vector<worker_description> visible_workers(const dds_settings& dds,
+                                                std::chrono::milliseconds discovery) {
+  dds::entity participant = dds::make_participant(dds);
+  dds::topics t(participant.get());
+  dds_qos_t* qos = dds::announcement_qos(std::chrono::milliseconds(0));
+  dds::entity reader(dds::check(
+      dds_create_reader(participant.get(), t.worker_info.get(), qos, nullptr), "reader"));
+  dds_delete_qos(qos);
+  std::this_thread::sleep_for(discovery);
+  return read_announcements(reader.get());
+}
+
+}  // namespace stride::remote

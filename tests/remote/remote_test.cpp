@@ -1,0 +1,270 @@
+// Components on worker processes, end to end: real `stride worker` processes, real `stride run`,
+// Cyclone DDS on the loopback interface. Each test has its own DDS domain, so that tests running
+// at the same time never see each other's workers.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "../orchestrator/process.hpp"
+#include "stride/cosim/archive.hpp"
+#include "worker_process.hpp"
+
+namespace stride::remote::test {
+namespace {
+
+namespace fs = std::filesystem;
+using cosim::test::quoted;
+using cosim::test::run_command;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+const std::string k_cli = STRIDE_CLI;
+const fs::path k_source = STRIDE_SOURCE_DIR;
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// replaces every `from` in `text` by `to`; the test fails if there is none
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+class remote_run : public ::testing::Test {
+ protected:
+  cosim::temp_dir scratch{"stride-remote-"};
+
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path f = scratch.path() / name;
+    std::ofstream(f, std::ios::binary) << text;
+    return f;
+  }
+  // the stride_test pair (two instances, every type across a connection) with `steps` steps of
+  // 10 ms, `a_attrs` and `b_attrs` added to the components' elements
+  fs::path pair(const std::string& name, int steps, const std::string& a_attrs,
+                const std::string& b_attrs) {
+    std::string xml = read(k_source / "tests/orchestrator/data/stride_test_pair.xml");
+    xml = replaced(xml, "stop=\"1\"", "stop=\"" + std::to_string(steps / 100.0) + "\"");
+    xml = replaced(xml, "<component name=\"a\" fmu=\"stride_test\"",
+                   "<component name=\"a\" fmu=\"stride_test\" " + a_attrs);
+    xml = replaced(xml, "<component name=\"b\" fmu=\"stride_test\"",
+                   "<component name=\"b\" fmu=\"stride_test\" " + b_attrs);
+    return write(name, xml);
+  }
+  worker_process start_worker(const std::string& name, int domain) {
+    return worker_process(k_cli, name, domain, scratch.path() / (name + ".log"));
+  }
+  cosim::test::process_result run(const fs::path& system, const std::string& out,
+                                  const std::string& args) {
+    return run_command("'" + k_cli + "' run " + quoted(system) + " --quiet --output " +
+                           quoted(scratch.path() / out) + " " + args,
+                       scratch.path());
+  }
+  std::string results(const std::string& out) { return read(scratch.path() / out / "results.csv"); }
+};
+
+TEST_F(remote_run, a_component_on_a_worker_gives_the_same_csv_as_in_process) {
+  auto w = start_worker("w1", 61);
+  ASSERT_TRUE(w.ready()) << w.output();
+  const auto local = run(pair("local.xml", 300, "", ""), "local", "");
+  ASSERT_EQ(local.exit_code, 0) << local.err;
+  const auto remote = run(pair("remote.xml", 300, "", "worker=\"w1\""), "remote", "--domain 61");
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_GT(results("local").size(), 1000u);
+  EXPECT_EQ(results("remote"), results("local"));  // byte for byte
+  EXPECT_THAT(w.output(), AllOf(HasSubstr("loaded stride_test"), HasSubstr(" begins"),
+                                HasSubstr("ends (its orchestrator said so)")));
+}
+
+TEST_F(remote_run, components_on_two_workers_give_the_same_csv) {
+  auto w1 = start_worker("w1", 62);
+  auto w2 = start_worker("w2", 62);
+  ASSERT_TRUE(w1.ready() && w2.ready()) << w1.output() << w2.output();
+  ASSERT_EQ(run(pair("local.xml", 200, "", ""), "local", "").exit_code, 0);
+  const auto remote =
+      run(pair("remote.xml", 200, "worker=\"w1\"", "worker=\"w2\""), "remote", "--domain 62");
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_EQ(results("remote"), results("local"));
+  EXPECT_THAT(w1.output(), HasSubstr("loaded stride_test"));
+  EXPECT_THAT(w2.output(), HasSubstr("loaded stride_test"));
+}
+
+TEST_F(remote_run, the_archive_is_shipped_once_per_worker_and_kept_for_the_next_run) {
+  auto w = start_worker("w1", 63);
+  ASSERT_TRUE(w.ready()) << w.output();
+  // both instances on one worker: one archive
+  const fs::path both = pair("both.xml", 50, "worker=\"w1\"", "worker=\"w1\"");
+  ASSERT_EQ(run(both, "first", "--domain 63").exit_code, 0);
+  ASSERT_EQ(run(both, "second", "--domain 63").exit_code, 0);
+  EXPECT_EQ(results("first"), results("second"));
+  const std::string log = w.output();
+  const auto loads = [&] {
+    std::size_t n = 0;
+    for (auto at = log.find("loaded stride_test"); at != std::string::npos;
+         at = log.find("loaded stride_test", at + 1)) {
+      ++n;
+    }
+    return n;
+  }();
+  EXPECT_EQ(loads, 1u) << log;
+}
+
+TEST_F(remote_run, an_error_on_the_worker_names_worker_component_and_time) {
+  auto w = start_worker("w1", 64);
+  ASSERT_TRUE(w.ready()) << w.output();
+  const auto r = run(pair("failing.xml", 100, "worker=\"w1\"", ""), "failing",
+                     "--domain 64 --set a.fail_at_step=7");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, AllOf(HasSubstr("component 'a' on worker 'w1'"),
+                           HasSubstr("step 7 fails on request"), HasSubstr("t = 0.06 s")));
+  // the steps before are recorded: rows for t = 0 .. 0.06
+  EXPECT_THAT(results("failing"), HasSubstr("\n0.06,"));
+
+  // the worker outlives the failed run and serves the next one
+  ASSERT_EQ(run(pair("local.xml", 100, "", ""), "local", "").exit_code, 0);
+  const auto next = run(pair("next.xml", 100, "", "worker=\"w1\""), "next", "--domain 64");
+  ASSERT_EQ(next.exit_code, 0) << next.err;
+  EXPECT_EQ(results("next"), results("local"));
+}
+
+TEST_F(remote_run, a_component_that_ends_the_run_on_a_worker_ends_it_here) {
+  auto w = start_worker("w1", 65);
+  ASSERT_TRUE(w.ready()) << w.output();
+  ASSERT_EQ(run(pair("local.xml", 100, "", ""), "local", "--set b.stop_after_steps=12").exit_code,
+            0);
+  const auto r = run(pair("remote.xml", 100, "", "worker=\"w1\""), "remote",
+                     "--domain 65 --set b.stop_after_steps=12");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(results("remote"), results("local"));
+}
+
+TEST_F(remote_run, a_missing_worker_is_a_timeout_error) {
+  const auto r = run(pair("remote.xml", 10, "", "worker=\"nobody\""), "remote",
+                     "--domain 66 --worker-timeout 0.5");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err,
+              AllOf(HasSubstr("remote.xml:"), HasSubstr("component 'b'"),
+                    HasSubstr("worker 'nobody' did not appear on DDS domain 66 within 0.5 s"),
+                    HasSubstr("stride worker --name nobody --domain 66")));
+}
+
+TEST_F(remote_run, two_runs_at_once_on_one_domain_do_not_mix) {
+  auto w = start_worker("w1", 67);
+  ASSERT_TRUE(w.ready()) << w.output();
+  // different parameters, so that crossed replies would show
+  ASSERT_EQ(run(pair("l1.xml", 400, "", ""), "l1", "--set a.gain=2").exit_code, 0);
+  ASSERT_EQ(run(pair("l2.xml", 400, "", ""), "l2", "--set a.gain=5").exit_code, 0);
+  ASSERT_NE(results("l1"), results("l2"));
+  const fs::path sys = pair("remote.xml", 400, "", "worker=\"w1\"");
+  cosim::test::process_result r1, r2;
+  std::thread t1([&] { r1 = run(sys, "r1", "--domain 67 --set a.gain=2"); });
+  std::thread t2([&] { r2 = run(sys, "r2", "--domain 67 --set a.gain=5"); });
+  t1.join();
+  t2.join();
+  ASSERT_EQ(r1.exit_code, 0) << r1.err;
+  ASSERT_EQ(r2.exit_code, 0) << r2.err;
+  EXPECT_EQ(results("r1"), results("l1"));
+  EXPECT_EQ(results("r2"), results("l2"));
+}
+
+TEST_F(remote_run, a_worker_drops_the_run_of_an_orchestrator_that_died) {
+  auto w = start_worker("w1", 68);
+  ASSERT_TRUE(w.ready()) << w.output();
+  const fs::path sys = pair("long.xml", 100000, "", "worker=\"w1\"");
+  const pid_t run_pid = spawn({k_cli, "run", sys.string(), "--quiet", "--domain", "68", "--output",
+                               (scratch.path() / "long").string()},
+                              scratch.path() / "long.log");
+  ASSERT_GT(run_pid, 0);
+  ASSERT_TRUE(w.wait_for(" begins"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ::kill(run_pid, SIGKILL);
+  ::waitpid(run_pid, nullptr, 0);
+  EXPECT_TRUE(w.wait_for("ends (its orchestrator is gone)")) << w.output();
+  // and serves the next run
+  ASSERT_EQ(run(pair("local.xml", 50, "", ""), "local", "").exit_code, 0);
+  const auto next = run(pair("next.xml", 50, "", "worker=\"w1\""), "next", "--domain 68");
+  ASSERT_EQ(next.exit_code, 0) << next.err;
+  EXPECT_EQ(results("next"), results("local"));
+}
+
+TEST_F(remote_run, a_second_worker_of_the_same_name_is_refused) {
+  auto w = start_worker("w1", 69);
+  ASSERT_TRUE(w.ready()) << w.output();
+  auto twin = start_worker("w1", 69);
+  EXPECT_EQ(twin.wait_exit(), 1);
+  EXPECT_THAT(twin.output(), HasSubstr("a worker named 'w1' is already on DDS domain 69"));
+}
+
+TEST_F(remote_run, workers_are_listed_and_stop_cleanly_on_sigterm) {
+  auto w1 = start_worker("alpha", 70);
+  auto w2 = start_worker("beta", 70);
+  ASSERT_TRUE(w1.ready() && w2.ready());
+  const auto list = run_command("'" + k_cli + "' workers --domain 70", scratch.path());
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  EXPECT_THAT(list.out, AllOf(HasSubstr("alpha"), HasSubstr("beta")));
+  EXPECT_EQ(w1.stop(SIGTERM), 0);
+  EXPECT_THAT(w1.output(), HasSubstr("worker stopped"));
+  const auto after = run_command("'" + k_cli + "' workers --domain 70", scratch.path());
+  EXPECT_THAT(after.out, AllOf(HasSubstr("beta"), ::testing::Not(HasSubstr("alpha"))));
+  EXPECT_EQ(w2.stop(SIGINT), 0);
+}
+
+#ifdef STRIDE_REMOTE_HAVE_WALK
+// the DARwIn-OP walk with the robot on a worker: the plant is the heavy component
+TEST_F(remote_run, the_walk_with_the_robot_on_a_worker_equals_the_walk_in_process) {
+  auto w = start_worker("w1", 71);
+  ASSERT_TRUE(w.ready()) << w.output();
+  ASSERT_EQ(run(k_source / "models/walk.xml", "local", "--stop-time 10").exit_code, 0);
+  const auto remote = run(k_source / "models/distributed/walk-robot-on-worker.xml", "remote",
+                          "--stop-time 10 --domain 71");
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_EQ(results("remote"), results("local"));
+}
+
+TEST_F(remote_run, a_killed_worker_stops_the_run_with_an_error_and_the_results_so_far) {
+  auto w = start_worker("w1", 72);
+  ASSERT_TRUE(w.ready()) << w.output();
+  ASSERT_EQ(run(k_source / "models/walk.xml", "local", "").exit_code, 0);
+  const fs::path out = scratch.path() / "remote";
+  const pid_t run_pid =
+      spawn({k_cli, "run", (k_source / "models/distributed/walk-robot-on-worker.xml").string(),
+             "--quiet", "--domain", "72", "--output", out.string()},
+            scratch.path() / "remote.log");
+  ASSERT_GT(run_pid, 0);
+  // kill it once the walk is under way
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!(fs::exists(out / "results.csv") && fs::file_size(out / "results.csv") > 100000) &&
+         std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_EQ(w.stop(SIGKILL), 128 + SIGKILL);
+  int status = 0;
+  ::waitpid(run_pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_THAT(read(scratch.path() / "remote.log"),
+              AllOf(HasSubstr("component 'robot' on worker 'w1'"), HasSubstr("worker 'w1' is gone"),
+                    HasSubstr("(step at t = ")));
+  // what was recorded is there, complete rows, equal to the same rows in process
+  const std::string partial = results("remote");
+  const std::string full = results("local");
+  ASSERT_GT(partial.size(), 100000u);
+  ASSERT_LT(partial.size(), full.size());
+  ASSERT_EQ(partial.back(), '\n');
+  EXPECT_EQ(partial, full.substr(0, partial.size()));
+}
+#endif
+
+}  // namespace
+}  // namespace stride::remote::test

@@ -1,0 +1,99 @@
+// A `stride worker` process for tests: started, waited for until it says it is ready, stopped
+// (SIGTERM) or killed on purpose, always reaped.
+#ifndef STRIDE_TESTS_REMOTE_WORKER_PROCESS_HPP
+#define STRIDE_TESTS_REMOTE_WORKER_PROCESS_HPP
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace stride::remote::test {
+
+/// Starts `args` with stdout and stderr into `log`; 0 if it cannot be started.
+inline pid_t spawn(std::vector<std::string> args, const std::filesystem::path& log) {
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = 0;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+class worker_process {
+ public:
+  /// Starts `stride worker --name NAME --domain DOMAIN`, its output into `log`.
+  worker_process(const std::string& stride, const std::string& name, int domain,
+                 std::filesystem::path log)
+      : log_(std::move(log)),
+        pid_(spawn({stride, "worker", "--name", name, "--domain", std::to_string(domain)}, log_)) {}
+  ~worker_process() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  worker_process(const worker_process&) = delete;
+  worker_process& operator=(const worker_process&) = delete;
+
+  /// What it printed so far.
+  std::string output() const {
+    std::ifstream in(log_);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  /// Waits until its output holds `text` (or it exits, or `timeout` passes).
+  bool wait_for(const std::string& text,
+                std::chrono::milliseconds timeout = std::chrono::seconds(20)) const {
+    const auto until = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < until) {
+      if (output().find(text) != std::string::npos) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  }
+  bool ready() const { return pid_ > 0 && wait_for(" ready on DDS domain "); }
+
+  /// Sends `signal` and reaps it; returns its exit code, or 128 + the signal that ended it.
+  int stop(int signal) {
+    if (pid_ <= 0) return -1;
+    ::kill(pid_, signal);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = 0;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  /// Waits for it to exit by itself; its exit code.
+  int wait_exit() {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = 0;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+
+ private:
+  std::filesystem::path log_;
+  pid_t pid_ = 0;
+};
+
+}  // namespace stride::remote::test
+
+#endif  // STRIDE_TESTS_REMOTE_WORKER_PROCESS_HPP
