@@ -57,6 +57,42 @@ const char* yes_no(bool b) {
   return b ? "true" : "false";
 }
 
+// where each component of `system` (replicas expanded) runs, one line per component
+std::string placement_table(const system_structure& system) {
+  const system_structure expanded = expand_replicas(system);
+  std::size_t width = 9;
+  for (const auto& c : expanded.components) width = std::max(width, c.name.size());
+  std::string table;
+  char line[512];
+  for (const auto& c : expanded.components) {
+    const std::string where = c.worker.empty() ? "this process" : "worker " + c.worker;
+    std::snprintf(line, sizeof line, "  %-*s  %-24s  %s\n", static_cast<int>(width), c.name.c_str(),
+                  where.c_str(), c.fmu.c_str());
+    table += line;
+  }
+  return table;
+}
+
+bool has_workers(const system_structure& system) {
+  for (const auto& c : system.components) {
+    if (!c.worker.empty()) return true;
+  }
+  return false;
+}
+
+int inspect_system(const fs::path& file) {
+  const system_structure system = parse_system_file(file);
+  const system_structure expanded = expand_replicas(system);
+  std::printf("System '%s' (%s): %zu components, %zu connections, %s\n\n", system.name.c_str(),
+              file.string().c_str(), expanded.components.size(), expanded.connections.size(),
+              std::string(to_string(system.algorithm)).c_str());
+  std::printf("Placement\n\n%s", placement_table(system).c_str());
+  if (has_workers(system)) {
+    std::printf("\n`stride workers` lists the workers visible on a DDS domain.\n");
+  }
+  return 0;
+}
+
 }  // namespace
 
 int run(const run_arguments& args, const run_extension& extension) {
@@ -146,7 +182,9 @@ int test(const test_arguments& args, const stride::suite::assertion_registry& ki
   return all_passed ? 0 : 1;
 }
 
-int inspect(const fs::path& fmu_file) {
+int inspect(const fs::path& file) {
+  if (file.extension() != ".fmu") return inspect_system(file);
+  const fs::path& fmu_file = file;
   // only the model description is needed: no binary is loaded
   temp_dir dir("stride-inspect-");
   extract_archive(fmu_file, dir.path());
@@ -236,7 +274,11 @@ int validate(const validate_arguments& args) {
     if (args.stop_time) system.stop = parse_stop(*args.stop_time);
     build_options options;
     options.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
-    const built_system built = build_system(system, options);
+    // components placed on workers are checked here with the same FMU: validation needs no
+    // worker to be running
+    system_structure local = system;
+    for (auto& c : local.components) c.worker.clear();
+    const built_system built = build_system(local, options);
     if (!args.quiet) {
       const execution& ex = *built.execution;
       std::string order;
@@ -250,6 +292,7 @@ int validate(const validate_arguments& args) {
           expand_replicas(system).connections.size(), ex.connections().size(),
           ex.algorithm_name().c_str(), order.c_str(), format_seconds(built.base_step).c_str(),
           format_seconds(built.start).c_str(), format_seconds(built.stop).c_str());
+      if (has_workers(system)) std::printf("placement:\n%s", placement_table(system).c_str());
     }
     return 0;
   }

@@ -63,7 +63,9 @@ struct test_arguments {
 /// `stride test`: runs a suite; 0 only when every case passed. `kinds` are the assertion kinds
 /// (built-in ones plus the application's).
 int test(const test_arguments& args, const stride::suite::assertion_registry& kinds);
-int inspect(const std::filesystem::path& fmu_file);
+/// `stride inspect`: an FMU's model description, or (any other file) a system's components and
+/// where each runs.
+int inspect(const std::filesystem::path& file);
 int validate(const validate_arguments& args);
 
 }  // namespace stride::cli

@@ -62,8 +62,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 3600.0));
 
   std::string inspect_file;
-  auto* inspect = app.add_subcommand("inspect", "Show an FMU's model description");
-  inspect->add_option("fmu", inspect_file, "FMU file")->required()->check(CLI::ExistingFile);
+  auto* inspect = app.add_subcommand(
+      "inspect", "Show an FMU's model description, or where a system's components run");
+  inspect->add_option("file", inspect_file, "FMU file or system XML")
+      ->required()
+      ->check(CLI::ExistingFile);
 
   stride::cli::test_arguments test_args;
   std::string suite_file;

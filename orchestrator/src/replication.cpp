@@ -18,9 +18,10 @@ std::string in_copy(const std::string& name, const std::set<std::string>& member
   return comp + "[" + std::to_string(k) + "]" + (dot == std::string::npos ? "" : name.substr(dot));
 }
 
-// "${copy}" → k, "${copy:a;b;c}" → the k-th item; other text unchanged
-std::string substitute_copy(const std::string& value, int k, int count,
-                            const parameter_setting& where) {
+// "${copy}" → k, "${copy:a;b;c}" → the k-th item; other text unchanged. `what` names the
+// attribute in errors ("parameter 'x_move'"), `at` its place in the file.
+std::string substitute_copy(const std::string& value, int k, int count, const std::string& what,
+                            const source_location& at) {
   static constexpr std::string_view k_open = "${copy";
   std::string out;
   std::string_view rest = value;
@@ -28,10 +29,10 @@ std::string substitute_copy(const std::string& value, int k, int count,
     out += rest.substr(0, pos);
     rest.remove_prefix(pos + k_open.size());
     const auto close = rest.find('}');
-    const std::string place = where.where.str().empty() ? "" : where.where.str() + ": ";
+    const std::string place = at.str().empty() ? "" : at.str() + ": ";
     if (close == std::string_view::npos || (close > 0 && rest[0] != ':')) {
-      throw validation_error(place + "parameter '" + where.variable + "': malformed ${copy} in '" +
-                             value + "' (expected ${copy} or ${copy:a;b;...})");
+      throw validation_error(place + what + ": malformed ${copy} in '" + value +
+                             "' (expected ${copy} or ${copy:a;b;...})");
     }
     if (close == 0) {
       out += std::to_string(k);
@@ -44,9 +45,8 @@ std::string substitute_copy(const std::string& value, int k, int count,
         list.remove_prefix(semi + 1);
       }
       if (items.size() != static_cast<std::size_t>(count)) {
-        throw validation_error(place + "parameter '" + where.variable + "': ${copy:...} has " +
-                               std::to_string(items.size()) + " values for " +
-                               std::to_string(count) + " copies");
+        throw validation_error(place + what + ": ${copy:...} has " + std::to_string(items.size()) +
+                               " values for " + std::to_string(count) + " copies");
       }
       out += items[static_cast<std::size_t>(k - 1)];
     }
@@ -80,7 +80,11 @@ system_structure expand_replicas(const system_structure& system) {
       for (const auto& m : g.components) {
         component_spec copy = m;
         copy.name = m.name + "[" + std::to_string(k) + "]";
-        for (auto& p : copy.parameters) p.value = substitute_copy(p.value, k, g.count, p);
+        for (auto& p : copy.parameters) {
+          p.value = substitute_copy(p.value, k, g.count, "parameter '" + p.variable + "'", p.where);
+        }
+        // copies may go to different workers: worker="w${copy}"
+        copy.worker = substitute_copy(m.worker, k, g.count, "worker of '" + m.name + "'", m.where);
         out.components.push_back(std::move(copy));
       }
       for (const auto& c : g.connections) {

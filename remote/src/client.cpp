@@ -170,6 +170,8 @@ reply_data client::call(dds_entity_t writer, const std::string& worker, stride_r
   const auto spin_until = std::chrono::steady_clock::now() + limits_.spin;
   while (arrivals_.load(std::memory_order_acquire) == seen &&
          std::chrono::steady_clock::now() < spin_until) {
+    // the reply is delivered by a DDS thread of this process: let it have the core
+    std::this_thread::yield();
   }
   std::unique_lock lock(mutex_);
   for (;;) {

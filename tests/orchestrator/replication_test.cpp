@@ -65,6 +65,26 @@ TEST(cosim_replication, copies_get_indexed_names_and_their_own_connections) {
   EXPECT_TRUE(s.groups.empty());
 }
 
+TEST(cosim_replication, copies_can_be_placed_on_different_workers) {
+  std::string xml = k_walkers;
+  xml.replace(xml.find("<component name=\"robot\" fmu=\"m\"/>"), 32,
+              "<component name=\"robot\" fmu=\"m\" worker=\"${copy:near;far;far}\"/>");
+  const system_structure s = expand_replicas(parse_system_text(xml, "t/w.xml"));
+  ASSERT_EQ(s.components.size(), 7u);
+  EXPECT_EQ(s.components[1].worker, "");  // gait[1]
+  EXPECT_EQ(s.components[2].worker, "near");
+  EXPECT_EQ(s.components[4].worker, "far");
+  EXPECT_EQ(s.components[6].worker, "far");
+  xml.replace(xml.find("${copy:near;far;far}"), 20, "w${copy:a;b}");
+  try {
+    expand_replicas(parse_system_text(xml, "t/w.xml"));
+    ADD_FAILURE() << "two workers for three copies accepted";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(),
+                HasSubstr("t/w.xml:8: worker of 'robot': ${copy:...} has 2 values for 3 copies"));
+  }
+}
+
 TEST(cosim_replication, the_copies_connect_to_array_variables_outside_the_group) {
   const built_system b = build_system(parse_system_text(k_walkers, "t/w.xml"), mock_options());
   const execution& ex = *b.execution;

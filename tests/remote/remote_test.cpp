@@ -220,6 +220,19 @@ TEST_F(remote_run, workers_are_listed_and_stop_cleanly_on_sigterm) {
   EXPECT_EQ(w2.stop(SIGINT), 0);
 }
 
+TEST_F(remote_run, validate_and_inspect_say_where_each_component_runs_without_a_worker) {
+  const fs::path system = pair("placed.xml", 10, "", "worker=\"w9\"");
+  const auto validated = run_command("'" + k_cli + "' validate " + quoted(system), scratch.path());
+  ASSERT_EQ(validated.exit_code, 0) << validated.err;
+  EXPECT_THAT(validated.out, AllOf(HasSubstr("OK"), HasSubstr("placement:")));
+  EXPECT_THAT(validated.out, ::testing::ContainsRegex("a +this process"));
+  EXPECT_THAT(validated.out, ::testing::ContainsRegex("b +worker w9"));
+  const auto inspected = run_command("'" + k_cli + "' inspect " + quoted(system), scratch.path());
+  ASSERT_EQ(inspected.exit_code, 0) << inspected.err;
+  EXPECT_THAT(inspected.out, ::testing::ContainsRegex("b +worker w9 +stride_test"));
+  EXPECT_THAT(inspected.out, HasSubstr("2 components"));
+}
+
 #ifdef STRIDE_REMOTE_HAVE_WALK
 // the DARwIn-OP walk with the robot on a worker: the plant is the heavy component
 TEST_F(remote_run, the_walk_with_the_robot_on_a_worker_equals_the_walk_in_process) {
@@ -230,6 +243,23 @@ TEST_F(remote_run, the_walk_with_the_robot_on_a_worker_equals_the_walk_in_proces
                           "--stop-time 10 --domain 71");
   ASSERT_EQ(remote.exit_code, 0) << remote.err;
   EXPECT_EQ(results("remote"), results("local"));
+}
+
+// four independent walkers, their robots spread over two workers and stepped concurrently
+TEST_F(remote_run, walkers_on_two_workers_equal_the_walkers_in_process) {
+  auto w1 = start_worker("w1", 73);
+  auto w2 = start_worker("w2", 73);
+  ASSERT_TRUE(w1.ready() && w2.ready()) << w1.output() << w2.output();
+  ASSERT_EQ(run(k_source / "models/walkers.xml", "local", "--stop-time 4").exit_code, 0);
+  const auto remote = run(k_source / "models/distributed/walkers-on-two-workers.xml", "remote",
+                          "--stop-time 4 --domain 73 --threads 2");
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_EQ(results("remote"), results("local"));
+  for (auto* w : {&w1, &w2}) {
+    const std::string log = w->output();
+    EXPECT_EQ(log.find("loaded robot"), log.rfind("loaded robot")) << log;  // one archive each
+    EXPECT_NE(log.find("loaded robot"), std::string::npos) << log;
+  }
 }
 
 TEST_F(remote_run, a_killed_worker_stops_the_run_with_an_error_and_the_results_so_far) {
@@ -249,8 +279,11 @@ TEST_F(remote_run, a_killed_worker_stops_the_run_with_an_error_and_the_results_s
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   EXPECT_EQ(w.stop(SIGKILL), 128 + SIGKILL);
+  const auto killed = std::chrono::steady_clock::now();
   int status = 0;
   ::waitpid(run_pid, &status, 0);
+  // the worker's DDS liveliness lease is 1 s; the bound is 2 s from kill to the end
+  EXPECT_LT(std::chrono::steady_clock::now() - killed, std::chrono::seconds(2));
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 1);
   EXPECT_THAT(read(scratch.path() / "remote.log"),

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# The cost of a component on a `stride worker` over Cyclone DDS on loopback, against the same run
+# in-process, each measurement REPEAT times (default 5, alternating so that machine load hits both
+# alike); prints medians and ranges.
+#  1. Round trip of one remote step: the stride_test pair (tests/orchestrator/data) with b on a
+#     worker, run for 2 000 and for 20 000 steps; (t20000 - t2000) / 18 000 removes start-up and
+#     is the wall time of one communication step, request and reply included.
+#  2. The 60 s DARwIn-OP walk (models/walk.xml) with the robot on a worker
+#     (models/distributed/walk-robot-on-worker.xml) against in-process: wall time, times real
+#     time, and the ratio.
+# usage: bench/remote/remote_step.sh [REPEAT] [BUILD_DIR] [DOMAIN]   (defaults 5, build/, 90)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+repeat="${1:-5}"
+build="${2:-$root/build}"
+domain="${3:-90}"
+stride="$build/bin/stride"
+[ -x "$stride" ] || { echo "remote_step: $stride not found (build first)" >&2; exit 1; }
+out="$(mktemp -d)"
+worker=""
+trap '[ -n "$worker" ] && kill -TERM "$worker" 2>/dev/null; wait; rm -rf "$out"' EXIT
+
+"$stride" worker --name w1 --domain "$domain" > "$out/worker.log" 2>&1 &
+worker=$!
+for _ in $(seq 100); do grep -q ready "$out/worker.log" && break; sleep 0.1; done
+grep -q ready "$out/worker.log" || { cat "$out/worker.log" >&2; exit 1; }
+
+pair="$root/tests/orchestrator/data/stride_test_pair.xml"
+for steps in 2000 20000; do
+  stop=$(python3 -c "print($steps / 100)")
+  sed -e "s/stop=\"1\"/stop=\"$stop\"/" "$pair" > "$out/local-$steps.xml"
+  sed -e "s/<component name=\"b\" fmu=\"stride_test\"/& worker=\"w1\"/" "$out/local-$steps.xml" \
+    > "$out/remote-$steps.xml"
+done
+
+timed() {  # LABEL SYSTEM ARGS...: appends "LABEL seconds" to times.txt
+  local label="$1" system="$2"
+  shift 2
+  local start=$EPOCHREALTIME
+  "$stride" run "$system" --quiet --output "$out/run" "$@" > "$out/last.txt" 2>&1 ||
+    { cat "$out/last.txt" >&2; echo "remote_step: a run failed" >&2; exit 1; }
+  local end=$EPOCHREALTIME
+  rm -rf "$out/run"
+  echo "$label $(python3 -c "print($end - $start)")" >> "$out/times.txt"
+}
+
+for ((i = 1; i <= repeat; ++i)); do
+  for steps in 2000 20000; do
+    timed "local-$steps" "$out/local-$steps.xml"
+    timed "remote-$steps" "$out/remote-$steps.xml" --domain "$domain"
+  done
+  timed walk-local "$root/models/walk.xml"
+  timed walk-remote "$root/models/distributed/walk-robot-on-worker.xml" --domain "$domain"
+  echo "round $i of $repeat done" >&2
+done
+
+python3 - "$out/times.txt" <<'PY'
+import collections, statistics, sys
+t = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    label, seconds = line.split()
+    t[label].append(float(seconds))
+med = lambda xs: statistics.median(xs)
+def per_step(kind):
+    return [(b - a) / 18000 * 1e6 for a, b in zip(t[f"{kind}-2000"], t[f"{kind}-20000"])]
+for kind in ("local", "remote"):
+    s = per_step(kind)
+    print(f"pair, b {'on a worker' if kind == 'remote' else 'in process'}: "
+          f"{med(s):.1f} us per step (min {min(s):.1f}, max {max(s):.1f}, n={len(s)})")
+for kind in ("local", "remote"):
+    s = t[f"walk-{kind}"]
+    print(f"60 s walk, robot {'on a worker' if kind == 'remote' else 'in process'}: median "
+          f"{med(s):.2f} s = {60 / med(s):.0f}x real time (min {min(s):.2f}, max {max(s):.2f})")
+r = [b / a for a, b in zip(t["walk-local"], t["walk-remote"])]
+print(f"walk remote / in process: median {med(r):.2f}x (min {min(r):.2f}, max {max(r):.2f})")
+PY
