@@ -292,7 +292,16 @@ int validate(const validate_arguments& args) {
           expand_replicas(system).connections.size(), ex.connections().size(),
           ex.algorithm_name().c_str(), order.c_str(), format_seconds(built.base_step).c_str(),
           format_seconds(built.start).c_str(), format_seconds(built.stop).c_str());
-      if (has_workers(system)) std::printf("placement:\n%s", placement_table(system).c_str());
+      if (has_workers(system)) {
+        std::printf("placement:\n%s", placement_table(system).c_str());
+        std::vector<std::string> workers;
+        for (const auto& c : expand_replicas(system).components) workers.push_back(c.worker);
+        for (const auto& g : worker_groups(ex, workers, system.algorithm)) {
+          std::string names;
+          for (std::size_t i : g) names += (names.empty() ? "" : ", ") + ex.component_at(i).name();
+          std::printf("  %s step together on worker %s\n", names.c_str(), workers[g[0]].c_str());
+        }
+      }
     }
     return 0;
   }

@@ -7,7 +7,9 @@
 #     is the wall time of one communication step, request and reply included.
 #  2. The 60 s DARwIn-OP walk (models/walk.xml) with the robot on a worker
 #     (models/distributed/walk-robot-on-worker.xml) against in-process: wall time, times real
-#     time, and the ratio.
+#     time, and the ratio; and with gait and robot on one worker stepping as a group
+#     (models/distributed/walk-on-one-worker.xml) against the two on two workers (two requests
+#     per step, one after the other).
 # usage: bench/remote/remote_step.sh [REPEAT] [BUILD_DIR] [DOMAIN]   (defaults 5, build/, 90)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -18,12 +20,19 @@ stride="$build/bin/stride"
 [ -x "$stride" ] || { echo "remote_step: $stride not found (build first)" >&2; exit 1; }
 out="$(mktemp -d)"
 worker=""
-trap '[ -n "$worker" ] && kill -TERM "$worker" 2>/dev/null; wait; rm -rf "$out"' EXIT
+trap '[ -n "$worker" ] && kill -TERM $worker 2>/dev/null; wait; rm -rf "$out"' EXIT
 
 "$stride" worker --name w1 --domain "$domain" > "$out/worker.log" 2>&1 &
 worker=$!
-for _ in $(seq 100); do grep -q ready "$out/worker.log" && break; sleep 0.1; done
-grep -q ready "$out/worker.log" || { cat "$out/worker.log" >&2; exit 1; }
+"$stride" worker --name w2 --domain "$domain" > "$out/worker2.log" 2>&1 &
+worker="$worker $!"
+for log in worker worker2; do
+  for _ in $(seq 100); do grep -q ready "$out/$log.log" && break; sleep 0.1; done
+  grep -q ready "$out/$log.log" || { cat "$out/$log.log" >&2; exit 1; }
+done
+sed -e 's|<component name="robot" fmu="robot" worker="w1"/>|<component name="robot" fmu="robot" worker="w2"/>|' \
+  "$root/models/distributed/walk-on-one-worker.xml" > "$out/walk-split.xml"
+grep -q 'worker="w2"' "$out/walk-split.xml" || { echo "remote_step: cannot split the walk" >&2; exit 1; }
 
 pair="$root/tests/orchestrator/data/stride_test_pair.xml"
 for steps in 2000 20000; do
@@ -51,6 +60,8 @@ for ((i = 1; i <= repeat; ++i)); do
   done
   timed walk-local "$root/models/walk.xml"
   timed walk-remote "$root/models/distributed/walk-robot-on-worker.xml" --domain "$domain"
+  timed walk-group "$root/models/distributed/walk-on-one-worker.xml" --domain "$domain"
+  timed walk-split "$out/walk-split.xml" --domain "$domain"
   echo "round $i of $repeat done" >&2
 done
 
@@ -73,4 +84,9 @@ for kind in ("local", "remote"):
           f"{med(s):.2f} s = {60 / med(s):.0f}x real time (min {min(s):.2f}, max {max(s):.2f})")
 r = [b / a for a, b in zip(t["walk-local"], t["walk-remote"])]
 print(f"walk remote / in process: median {med(r):.2f}x (min {min(r):.2f}, max {max(r):.2f})")
+for kind, what in (("group", "gait + robot on one worker (a group)"),
+                   ("split", "gait on w1, robot on w2")):
+    s = t[f"walk-{kind}"]
+    print(f"60 s walk, {what}: median {med(s):.2f} s = {60 / med(s):.0f}x real time "
+          f"(min {min(s):.2f}, max {max(s):.2f})")
 PY

@@ -327,4 +327,80 @@ step_plan plan_steps(const std::vector<std::size_t>& order,
   return plan;
 }
 
+step_units make_units(std::size_t n, const std::vector<std::vector<std::size_t>>& groups) {
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> group_of(n, none);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    for (std::size_t c : groups[g]) {
+      if (c >= n || group_of[c] != none) {
+        throw validation_error("step groups: component " + std::to_string(c) +
+                               " is not a component or is in two groups");
+      }
+      group_of[c] = g;
+    }
+  }
+  step_units u;
+  u.unit_of.assign(n, none);
+  std::vector<std::size_t> unit_of_group(groups.size(), none);
+  for (std::size_t c = 0; c < n; ++c) {
+    if (group_of[c] == none) {
+      u.unit_of[c] = u.members.size();
+      u.members.push_back({c});
+      continue;
+    }
+    std::size_t& unit = unit_of_group[group_of[c]];
+    if (unit == none) {
+      unit = u.members.size();
+      u.members.emplace_back();
+    }
+    u.unit_of[c] = unit;
+    u.members[unit].push_back(c);
+  }
+  return u;
+}
+
+std::vector<connection> connections_between(const step_units& units,
+                                            const std::vector<connection>& connections) {
+  std::vector<connection> result;
+  for (const auto& c : connections) {
+    const std::size_t from = units.unit_of.at(c.from.component);
+    const std::size_t to = units.unit_of.at(c.to.component);
+    if (from == to) continue;
+    connection between = c;
+    between.from.component = from;
+    between.to.component = to;
+    result.push_back(std::move(between));
+  }
+  return result;
+}
+
+std::vector<bool> steppable_groups(std::size_t n, const std::vector<connection>& connections,
+                                   const std::vector<std::vector<std::size_t>>& groups) {
+  std::vector<bool> kept(groups.size(), true);
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::vector<std::size_t>> candidates;
+    std::vector<std::size_t> position;  // candidate → index in groups
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (kept[g]) {
+        candidates.push_back(groups[g]);
+        position.push_back(g);
+      }
+    }
+    const step_units units = make_units(n, candidates);
+    const auto succ = successors_of(units.members.size(), connections_between(units, connections));
+    std::size_t count = 0;
+    const auto scc = strongly_connected(succ, count);
+    std::vector<std::size_t> size(count, 0);
+    for (std::size_t u = 0; u < units.members.size(); ++u) ++size[scc[u]];
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      if (size[scc[units.unit_of[candidates[k].front()]]] > 1) {
+        kept[position[k]] = false;
+        changed = true;
+      }
+    }
+  }
+  return kept;
+}
+
 }  // namespace stride::cosim

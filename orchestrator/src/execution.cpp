@@ -1,5 +1,7 @@
 #include "stride/cosim/execution.hpp"
 
+#include <algorithm>
+
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim {
@@ -107,6 +109,30 @@ void execution::set_start_value(variable_id id, scalar_value value, const std::s
   s.refs.add(v.type, v.reference);
 }
 
+void execution::add_group(std::vector<std::size_t> members, std::unique_ptr<step_group> group) {
+  if (frozen_) throw validation_error("cannot add a step group after freeze()");
+  if (!group) throw validation_error("add_group: null group");
+  if (members.size() < 2) throw validation_error("a step group needs at least two members");
+  std::sort(members.begin(), members.end());
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    if (members[k] >= components_.size()) {
+      throw validation_error("add_group: no component " + std::to_string(members[k]));
+    }
+    if (k > 0 && members[k] == members[k - 1]) {
+      throw validation_error("add_group: component '" + components_[members[k]]->name() +
+                             "' named twice");
+    }
+    for (const auto& other : group_members_) {
+      if (std::find(other.begin(), other.end(), members[k]) != other.end()) {
+        throw validation_error("component '" + components_[members[k]]->name() +
+                               "' is already in a step group");
+      }
+    }
+  }
+  group_members_.push_back(std::move(members));
+  groups_.push_back(std::move(group));
+}
+
 component_declarations execution::declarations() const {
   component_declarations d;
   for (const auto& c : components_) {
@@ -126,6 +152,9 @@ void execution::freeze() {
   w.step_multiples = multiples_;
   w.connections = connections_;
   w.starts = starts_;
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    w.groups.push_back({group_members_[g], groups_[g].get()});
+  }
   order_ = algo_->stepping_order(w);
   algo_->setup(std::move(w), order_);
   frozen_ = true;

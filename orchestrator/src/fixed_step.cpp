@@ -7,6 +7,7 @@
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/error.hpp"
 #include "task_runner.hpp"
+#include "value_lanes.hpp"
 
 namespace stride::cosim {
 
@@ -20,34 +21,10 @@ int default_thread_count() noexcept {
 
 namespace {
 
-// the list of one exchange type inside a batch
-template <class T>
-auto& lane(variable_refs& r) {
-  if constexpr (std::is_same_v<T, double>) return r.reals;
-  if constexpr (std::is_same_v<T, int>) return r.integers;
-  if constexpr (std::is_same_v<T, bool>) return r.booleans;
-  if constexpr (std::is_same_v<T, std::string>) return r.strings;
-}
-template <class T>
-auto& lane(value_block& b) {
-  if constexpr (std::is_same_v<T, double>) return b.reals;
-  if constexpr (std::is_same_v<T, int>) return b.integers;
-  if constexpr (std::is_same_v<T, bool>) return b.booleans;
-  if constexpr (std::is_same_v<T, std::string>) return b.strings;
-}
-template <class T>
-const auto& lane(const value_block& b) {
-  return lane<T>(const_cast<value_block&>(b));
-}
+using detail::for_each_type;
+using detail::lane;
 
-// calls f.template operator()<T>() for the four exchange types
-template <class F>
-void for_each_type(F&& f) {
-  f.template operator()<double>();
-  f.template operator()<int>();
-  f.template operator()<bool>();
-  f.template operator()<std::string>();
-}
+constexpr std::size_t k_no_group = static_cast<std::size_t>(-1);
 
 // where an input's value comes from: an output slot of a component
 struct source {
@@ -84,6 +61,18 @@ struct entry {
   bool needs_published = true;  // someone reads its previous values (delay, Jacobi, decimation)
   bool steps_now = false;       // it steps in the current macro step
   bool terminated = false;
+  std::size_t group = k_no_group;  // the step group it belongs to
+};
+
+// a step group as the algorithm drives it
+struct group_entry {
+  step_group* stepper = nullptr;
+  std::vector<std::size_t> members;  // component indices, ascending
+  std::size_t first = 0;             // the member stepped first: the group steps in its place
+  group_layout layout;
+  bool prepared = false;  // the group has the members' current caches
+  std::vector<const value_block*> inputs;
+  std::vector<value_block*> outputs;
 };
 
 }  // namespace
@@ -96,6 +85,7 @@ class fixed_step_algorithm::impl {
   system_wiring wiring;
   std::vector<std::size_t> order;
   std::vector<entry> entries;
+  std::vector<group_entry> groups;
   std::vector<std::pair<std::size_t, std::size_t>> observed;  // component, slot
   std::vector<variable_type> observed_type;
   step_plan plan;
@@ -119,11 +109,16 @@ class fixed_step_algorithm::impl {
     return slot;
   }
 
+  bool reads_previous(const connection& c) const {
+    return c.options.delayed || kind == algorithm_kind::jacobi;
+  }
+
+  // the input slot the connection feeds, in the lane of its type
   template <class T>
-  void add_input(input_wiring& w, const connection& c, std::size_t slot) {
+  std::size_t add_input(input_wiring& w, const connection& c, std::size_t slot) {
     lane<T>(w.refs).push_back(var(c.to).reference);
-    w.sources<T>().push_back(
-        {c.from.component, slot, c.options.delayed || kind == algorithm_kind::jacobi});
+    w.sources<T>().push_back({c.from.component, slot, reads_previous(c)});
+    return lane<T>(w.refs).size() - 1;
   }
 
   void wire_inputs() {
@@ -134,33 +129,28 @@ class fixed_step_algorithm::impl {
           to.causality == causality::parameter && to.variability != variability::tunable;
       entry& e = entries[c.to.component];
       input_wiring& w = init_only ? e.init_inputs : e.step_inputs;
-      switch (exchange_type(to.type)) {
-        case variable_type::real:
-          add_input<double>(w, c, slot);
-          break;
-        case variable_type::integer:
-          add_input<int>(w, c, slot);
-          break;
-        case variable_type::boolean:
-          add_input<bool>(w, c, slot);
-          break;
-        case variable_type::string:
-          add_input<std::string>(w, c, slot);
-          break;
-        case variable_type::enumeration:
-          break;
+      std::size_t to_slot = 0;
+      detail::with_type(to.type, [&]<class T>() { to_slot = add_input<T>(w, c, slot); });
+      // within a step group the group itself carries the value from member to member
+      const std::size_t g = entries[c.from.component].group;
+      if (!init_only && g != k_no_group && g == e.group) {
+        const auto position = [&](std::size_t component) {
+          const auto& m = groups[g].members;
+          return static_cast<std::size_t>(std::find(m.begin(), m.end(), component) - m.begin());
+        };
+        groups[g].layout.links.push_back({position(c.from.component), slot,
+                                          position(c.to.component), to_slot, exchange_type(to.type),
+                                          reads_previous(c)});
       }
     }
   }
 
-  // The value of a source as seen at time t. A source that steps in this macro step and is read
-  // at the previous communication point gives its published values, written before any
-  // component stepped: that read never races with the source's own step on another thread.
+  // the value of a source as seen at time t (the rule is in value_lanes.hpp)
   template <class T>
   auto read(const source& s, time_point t) const {
     const entry& e = entries[s.component];
-    if (s.previous && e.steps_now) return lane<T>(e.published)[s.slot];
-    return e.time <= t ? lane<T>(e.latest)[s.slot] : lane<T>(e.published)[s.slot];
+    const bool published = detail::reads_published(s.previous, e.steps_now, e.time, t);
+    return lane<T>(published ? e.published : e.latest)[s.slot];
   }
 
   void transfer(input_wiring& w, time_point current, time_point previous) {
@@ -204,6 +194,52 @@ class fixed_step_algorithm::impl {
     e.time += dt;
     return true;
   }
+
+  // a step group's part of the macro step from t; false when a member asked to terminate
+  bool step_group_entry(group_entry& g, time_point t, time_point next) {
+    if (!g.prepared) {
+      std::vector<member_cache> caches;
+      for (std::size_t m : g.members) {
+        caches.push_back({entries[m].time, entries[m].latest, entries[m].published});
+      }
+      guarded(entries[g.first], t, "step", [&] { g.stepper->prepare(caches); });
+      g.prepared = true;
+    }
+    for (std::size_t k = 0; k < g.members.size(); ++k) {
+      entry& e = entries[g.members[k]];
+      // the slots fed by other members get what this side knows; the group overwrites them
+      if (e.steps_now) transfer(e.step_inputs, kind == algorithm_kind::jacobi ? t : next, t);
+      g.inputs[k] = &e.step_inputs.values;
+      g.outputs[k] = &e.latest;
+    }
+    std::optional<std::size_t> ended;
+    guarded(entries[g.first], t, "step",
+            [&] { ended = g.stepper->step(t, steps, g.inputs, g.outputs); });
+    for (std::size_t k : g.layout.order) {
+      entry& e = entries[g.members[k]];
+      if (ended == k) {
+        e.terminated = true;
+        return false;
+      }
+      if (e.steps_now) e.time += step * e.multiple;
+    }
+    return true;
+  }
+
+  // one unit of the macro step: a component alone, or the group it opens
+  bool step_unit(std::size_t i, time_point t, time_point next) {
+    entry& e = entries[i];
+    if (e.group == k_no_group) return step_entry(e, t, next);
+    group_entry& g = groups[e.group];
+    return i != g.first || step_group_entry(g, t, next);
+  }
+
+  // units for the step groups: the stepping order and the thread plan are made over them
+  step_units units() const {
+    std::vector<std::vector<std::size_t>> members;
+    for (const auto& g : wiring.groups) members.push_back(g.members);
+    return make_units(wiring.components.size(), members);
+  }
 };
 
 fixed_step_algorithm::fixed_step_algorithm(duration base_step, algorithm_kind kind, int threads)
@@ -235,11 +271,34 @@ std::string fixed_step_algorithm::describe() const {
 }
 
 std::vector<std::size_t> fixed_step_algorithm::stepping_order(const system_wiring& w) const {
-  if (pimpl_->kind == algorithm_kind::gauss_seidel) {
-    return gauss_seidel_order(w.components.size(), w.connections);
+  const bool gauss_seidel = pimpl_->kind == algorithm_kind::gauss_seidel;
+  std::vector<std::vector<std::size_t>> groups;
+  for (const auto& g : w.groups) groups.push_back(g.members);
+  const step_units u = make_units(w.components.size(), groups);
+  std::vector<std::size_t> unit_order(u.members.size());
+  for (std::size_t k = 0; k < unit_order.size(); ++k) unit_order[k] = k;
+  if (gauss_seidel)
+    unit_order = gauss_seidel_order(u.members.size(), connections_between(u, w.connections));
+  // a unit's members among themselves: the order they would have alone
+  std::vector<std::size_t> order;
+  for (std::size_t unit : unit_order) {
+    const auto& members = u.members[unit];
+    if (members.size() == 1 || !gauss_seidel) {
+      order.insert(order.end(), members.begin(), members.end());
+      continue;
+    }
+    std::vector<connection> inside;
+    for (const auto& c : w.connections) {
+      const auto from = std::find(members.begin(), members.end(), c.from.component);
+      const auto to = std::find(members.begin(), members.end(), c.to.component);
+      if (from == members.end() || to == members.end()) continue;
+      connection local = c;
+      local.from.component = static_cast<std::size_t>(from - members.begin());
+      local.to.component = static_cast<std::size_t>(to - members.begin());
+      inside.push_back(std::move(local));
+    }
+    for (std::size_t k : gauss_seidel_order(members.size(), inside)) order.push_back(members[k]);
   }
-  std::vector<std::size_t> order(w.components.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   return order;
 }
 
@@ -263,13 +322,56 @@ void fixed_step_algorithm::setup(system_wiring wiring, std::vector<std::size_t> 
     e.multiple = p.wiring.step_multiples.at(i);
     p.entries.push_back(std::move(e));
   }
+  const step_units units = p.units();  // checks that the groups are disjoint
+  std::vector<std::size_t> position_in_order(p.entries.size());
+  for (std::size_t k = 0; k < p.order.size(); ++k) position_in_order.at(p.order[k]) = k;
+  for (const auto& gw : p.wiring.groups) {
+    if (gw.stepper == nullptr || gw.members.empty()) {
+      throw validation_error("a step group without members or stepper");
+    }
+    group_entry g;
+    g.stepper = gw.stepper;
+    g.members = gw.members;
+    for (std::size_t k = 0; k < g.members.size(); ++k) {
+      p.entries[g.members[k]].group = p.groups.size();
+      g.layout.order.push_back(k);
+      g.layout.multiples.push_back(p.entries[g.members[k]].multiple);
+    }
+    std::sort(g.layout.order.begin(), g.layout.order.end(), [&](std::size_t a, std::size_t b) {
+      return position_in_order[g.members[a]] < position_in_order[g.members[b]];
+    });
+    g.first = g.members[g.layout.order.front()];
+    g.layout.base_step = p.step;
+    g.inputs.resize(g.members.size());
+    g.outputs.resize(g.members.size());
+    p.groups.push_back(std::move(g));
+  }
   p.wire_inputs();
+  for (auto& g : p.groups) g.stepper->arrange(g.layout);
   // previous values are read only through delays, Jacobi transfer or decimation
   for (auto& e : p.entries) e.needs_published = p.kind == algorithm_kind::jacobi || e.multiple > 1;
   for (const auto& c : p.wiring.connections) {
     if (c.options.delayed) p.entries[c.from.component].needs_published = true;
   }
-  p.plan = plan_steps(p.order, p.wiring.connections, p.kind == algorithm_kind::jacobi);
+  // the thread plan over units, each unit's members in stepping order
+  std::vector<std::size_t> unit_order;
+  for (std::size_t i : p.order) {
+    const std::size_t u = units.unit_of[i];
+    if (std::find(unit_order.begin(), unit_order.end(), u) == unit_order.end()) {
+      unit_order.push_back(u);
+    }
+  }
+  p.plan = plan_steps(unit_order, connections_between(units, p.wiring.connections),
+                      p.kind == algorithm_kind::jacobi);
+  for (auto& task : p.plan.tasks) {
+    std::vector<std::size_t> components;
+    for (std::size_t i : p.order) {
+      if (std::find(task.begin(), task.end(), units.unit_of[i]) != task.end()) {
+        components.push_back(i);
+      }
+    }
+    task = std::move(components);
+  }
   if (p.threads > 1 && p.plan.tasks.size() > 1) {
     p.runner = std::make_unique<task_runner>(
         std::min<int>(p.threads, static_cast<int>(p.plan.tasks.size())));
@@ -352,7 +454,7 @@ step_outcome fixed_step_algorithm::step(time_point t) {
   // for it; the other tasks complete, whatever the thread count
   const auto run_task = [&](std::size_t task) {
     for (std::size_t i : p.plan.tasks[task]) {
-      if (!p.step_entry(p.entries[i], t, next)) return false;
+      if (!p.step_unit(i, t, next)) return false;
     }
     return true;
   };
@@ -412,6 +514,7 @@ void fixed_step_algorithm::restore_state(const std::any& state) {
     p.entries[i].published = s->entries[i].published;
     p.entries[i].terminated = false;
   }
+  for (auto& g : p.groups) g.prepared = false;  // the groups get the restored caches
 }
 
 namespace {

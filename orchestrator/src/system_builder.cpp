@@ -190,6 +190,40 @@ std::vector<variable_id> expand_side(const execution& ex, const std::string& ful
 
 }  // namespace
 
+std::vector<std::vector<std::size_t>> worker_groups(const execution& ex,
+                                                    const std::vector<std::string>& workers,
+                                                    algorithm_kind kind) {
+  // connected sets per worker (union-find over connections within one worker)
+  const std::size_t n = ex.component_count();
+  std::vector<std::size_t> root(n);
+  for (std::size_t i = 0; i < n; ++i) root[i] = i;
+  const auto find = [&](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (const auto& c : ex.connections()) {
+    const std::size_t a = c.from.component, b = c.to.component;
+    if (a != b && !workers.at(a).empty() && workers.at(a) == workers.at(b)) {
+      root[std::max(find(a), find(b))] = std::min(find(a), find(b));
+    }
+  }
+  std::map<std::size_t, std::vector<std::size_t>> sets;
+  for (std::size_t i = 0; i < n; ++i) sets[find(i)].push_back(i);
+  std::vector<std::vector<std::size_t>> groups;
+  for (auto& [first, members] : sets) {
+    if (members.size() > 1) groups.push_back(std::move(members));
+  }
+  if (kind == algorithm_kind::gauss_seidel) {
+    const auto kept = steppable_groups(n, ex.connections(), groups);
+    std::vector<std::vector<std::size_t>> steppable;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (kept[g]) steppable.push_back(std::move(groups[g]));
+    }
+    groups = std::move(steppable);
+  }
+  return groups;
+}
+
 built_system build_system(const system_structure& structure, const build_options& options) {
   const system_structure system = expand_replicas(structure);
   const log_sink log = options.log ? options.log : stderr_log_sink();
@@ -201,23 +235,28 @@ built_system build_system(const system_structure& structure, const build_options
                             options.fmu_debug_logging};
   in_process_placement in_process;
   std::vector<std::unique_ptr<component>> components;
+  std::vector<placement_resolver*> made_by;  // per component
   for (const auto& spec : system.components) {
     component_info info;
     info.name = spec.name;
     info.step_multiple = spec.step_multiple;
     info.worker = spec.worker;
     std::unique_ptr<component> c;
+    placement_resolver* maker = nullptr;
     for (const auto& resolver : options.placements) {
       c = resolver->create(spec, context);
       if (c) {
         info.fmu = resolver->source_of(spec);
+        maker = resolver.get();
         break;
       }
     }
     if (!c) {
       c = in_process.create(spec, context);
       info.fmu = in_process.source_of(spec);
+      maker = &in_process;
     }
+    made_by.push_back(maker);
     if (!c) {
       throw validation_error(prefix(spec.where) + "component '" + spec.name + "': worker \"" +
                              spec.worker +
@@ -297,6 +336,26 @@ built_system build_system(const system_structure& structure, const build_options
     for (std::size_t k = 0; k < sources.size(); ++k) {
       ex->connect(sources[k], targets[k], connection_options{c.delayed, c.where.str()});
     }
+  }
+
+  // connected components on one worker step there together, when their placement can
+  std::vector<std::string> workers;
+  for (const auto& spec : system.components) workers.push_back(spec.worker);
+  for (const auto& members : worker_groups(*ex, workers, system.algorithm)) {
+    std::vector<component*> parts;
+    std::string names;
+    bool one_maker = true;
+    for (std::size_t i : members) {
+      parts.push_back(&ex->component_at(i));
+      names += (names.empty() ? "" : ", ") + ex->component_at(i).name();
+      one_maker = one_maker && made_by[i] == made_by[members.front()];
+    }
+    auto group = one_maker ? made_by[members.front()]->create_group(parts) : nullptr;
+    if (!group) continue;
+    log(log_level::info, "stride", "",
+        names + " step together on worker '" + workers[members.front()] + "'");
+    ex->add_group(members, std::move(group));
+    built.groups.push_back(members);
   }
 
   ex->freeze();

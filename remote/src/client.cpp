@@ -28,20 +28,18 @@ reply_data copy_reply(const stride_remote_reply& r) {
   reply_data out;
   out.result = static_cast<status>(r.status);
   out.message = r.message != nullptr ? r.message : "";
-  const auto& v = r.data;
-  out.values.reals.assign(v.reals._buffer, v.reals._buffer + v.reals._length);
-  out.values.integers.assign(v.integers._buffer, v.integers._buffer + v.integers._length);
-  out.values.booleans.assign(v.booleans._buffer, v.booleans._buffer + v.booleans._length);
-  for (std::uint32_t i = 0; i < v.strings._length; ++i) {
-    out.values.strings.emplace_back(v.strings._buffer[i] != nullptr ? v.strings._buffer[i] : "");
-  }
+  copy_values(r.data, out.values);
   out.blob = get_blob(r.blob);
   for (std::uint32_t i = 0; i < r.log._length; ++i) {
     const auto& l = r.log._buffer[i];
     const int level = std::clamp(l.level, 0, static_cast<int>(cosim::log_level::error));
-    out.log.push_back({static_cast<cosim::log_level>(level), l.category ? l.category : "",
-                       l.message ? l.message : ""});
+    out.log.push_back({static_cast<cosim::log_level>(level), l.source ? l.source : "",
+                       l.category ? l.category : "", l.message ? l.message : ""});
   }
+  out.outputs.resize(r.outputs._length);
+  for (std::uint32_t i = 0; i < r.outputs._length; ++i)
+    copy_values(r.outputs._buffer[i], out.outputs[i]);
+  out.ended = r.ended;
   return out;
 }
 

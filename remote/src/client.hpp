@@ -27,10 +27,13 @@ struct reply_data {
   std::vector<std::byte> blob;
   struct log_line {
     cosim::log_level level;
+    std::string source;  ///< the instance that logged it
     std::string category;
     std::string message;
   };
-  std::vector<log_line> log;  ///< what the component logged meanwhile
+  std::vector<log_line> log;                ///< what the component logged meanwhile
+  std::vector<cosim::value_block> outputs;  ///< group step: per member
+  int ended = -1;                           ///< group step: the member that ended the run
 };
 
 class client {

@@ -36,6 +36,10 @@ std::string to_string(op o) {
       return "free_instance";
     case op::end_run:
       return "end_run";
+    case op::group_setup:
+      return "group_setup";
+    case op::group_step:
+      return "group_step";
   }
   return "operation " + std::to_string(static_cast<int>(o));
 }
@@ -125,6 +129,10 @@ void get_values(const stride_remote_values& in, const cosim::variable_refs& expe
   expect_size(in.integers._length, expected.integers.size(), "integers");
   expect_size(in.booleans._length, expected.booleans.size(), "booleans");
   expect_size(in.strings._length, expected.strings.size(), "strings");
+  copy_values(in, out);
+}
+
+void copy_values(const stride_remote_values& in, cosim::value_block& out) {
   out.reals.assign(in.reals._buffer, in.reals._buffer + in.reals._length);
   out.integers.assign(in.integers._buffer, in.integers._buffer + in.integers._length);
   out.booleans.assign(in.booleans._buffer, in.booleans._buffer + in.booleans._length);
@@ -137,6 +145,11 @@ void get_values(const stride_remote_values& in, const cosim::variable_refs& expe
 bool fits(const cosim::value_block& v, const cosim::variable_refs& refs) {
   return v.reals.size() == refs.reals.size() && v.integers.size() == refs.integers.size() &&
          v.booleans.size() == refs.booleans.size() && v.strings.size() == refs.strings.size();
+}
+
+bool same_shape(const cosim::value_block& a, const cosim::value_block& b) {
+  return a.reals.size() == b.reals.size() && a.integers.size() == b.integers.size() &&
+         a.booleans.size() == b.booleans.size() && a.strings.size() == b.strings.size();
 }
 
 void put_blob(std::span<const std::byte> bytes, dds_sequence_octet& out) {

@@ -32,6 +32,10 @@ enum class op : std::int32_t {
   terminate,
   free_instance,  ///< the instance goes away
   end_run,        ///< every instance of the run goes away
+  group_setup,    ///< component: group name; members, order, links: where they stand and how
+                  ///< they step (again after every restore)
+  group_step,     ///< component: group name; t_ns, dt_ns (base step), index; members: inputs;
+                  ///< reply outputs per member, ended
 };
 
 /// How a request went.
@@ -70,8 +74,13 @@ cosim::variable_refs get_refs(const stride_remote_values& in);
 void get_values(const stride_remote_values& in, const cosim::variable_refs& expected,
                 cosim::value_block& out);
 
+/// Reads values of any sizes.
+void copy_values(const stride_remote_values& in, cosim::value_block& out);
+
 /// Whether `v` holds as many values of each type as `refs` has references.
 bool fits(const cosim::value_block& v, const cosim::variable_refs& refs);
+/// Whether `a` and `b` hold as many values of each type.
+bool same_shape(const cosim::value_block& a, const cosim::value_block& b);
 
 /// Borrows `bytes` into a wire octet sequence.
 void put_blob(std::span<const std::byte> bytes, dds_sequence_octet& out);

@@ -39,9 +39,13 @@ reply_data remote_component::call(op o, stride_remote_request& r) {
   } catch (const std::exception& e) {
     throw cosim::component_error(where() + e.what());
   }
-  for (const auto& l : reply.log) log_(l.level, name_, l.category, l.message);
+  for (const auto& l : reply.log) forward_log(l);
   if (reply.result == status::error) throw cosim::component_error(where() + reply.message);
   return reply;
+}
+
+void remote_component::forward_log(const reply_data::log_line& line) const {
+  log_(line.level, name_, line.category, line.message);
 }
 
 void remote_component::setup(cosim::time_point start, std::optional<cosim::time_point> stop) {

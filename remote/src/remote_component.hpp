@@ -21,6 +21,7 @@ class remote_component final : public cosim::component {
                    bool debug_logging);
 
   const std::string& name() const noexcept override { return name_; }
+  const std::string& worker() const noexcept { return worker_; }
   const cosim::model_description& model_description() const noexcept override {
     return description_;
   }
@@ -36,6 +37,9 @@ class remote_component final : public cosim::component {
                           cosim::value_block& outputs) override;
   std::vector<std::byte> save_state() override;
   void restore_state(std::span<const std::byte> state) override;
+
+  /// Passes a line the instance logged on the worker to this side's log.
+  void forward_log(const reply_data::log_line& line) const;
 
  private:
   // a request for this instance, strings set

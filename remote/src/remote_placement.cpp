@@ -5,6 +5,7 @@
 
 #include "client.hpp"
 #include "remote_component.hpp"
+#include "remote_group.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/system_builder.hpp"
@@ -90,6 +91,21 @@ std::unique_ptr<cosim::component> remote_placement::create(
   } catch (const std::exception& e) {
     throw cosim::component_error(where + e.what());
   }
+}
+
+std::unique_ptr<cosim::step_group> remote_placement::create_group(
+    const std::vector<cosim::component*>& members) {
+  std::vector<remote_component*> parts;
+  for (auto* m : members) {
+    auto* part = dynamic_cast<remote_component*>(m);
+    if (part == nullptr ||
+        part->worker() != dynamic_cast<remote_component*>(members.front())->worker()) {
+      return nullptr;
+    }
+    parts.push_back(part);
+  }
+  if (parts.empty() || !link_) return nullptr;
+  return std::make_unique<remote_group>(link_, parts.front()->worker(), std::move(parts));
 }
 
 fs::path remote_placement::source_of(const cosim::component_spec& spec) const {

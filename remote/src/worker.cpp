@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "dds.hpp"
+#include "hosted.hpp"
 #include "protocol.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/run.hpp"
@@ -39,19 +40,14 @@ std::vector<worker_description> read_announcements(dds_entity_t reader) {
   return out;
 }
 
-// one component instance and what its steps exchange
-struct instance {
-  std::unique_ptr<cosim::component> component;
-  cosim::variable_refs inputs;
-  cosim::variable_refs outputs;
-  cosim::value_block in;
-  cosim::value_block out;
-};
+using instance = hosted_instance;
 
-// what the worker keeps for one run: its instances, and whose requests they are
+// what the worker keeps for one run: its instances and step groups, and whose requests they are
 struct run_state {
   dds_instance_handle_t orchestrator = 0;  // the request writer of the run's orchestrator
+  std::uint64_t requests = 0;              // served so far: reported when the run ends
   std::map<std::string, instance> instances;
+  std::map<std::string, hosted_group> groups;  // by group name; refer to instances: go first
 };
 
 class host {
@@ -151,7 +147,10 @@ class host {
   }
 
   void end_run(const std::string& id, const char* why) {
-    if (runs_.erase(id) > 0) log("run " + id + " ends (" + why + ")");
+    const auto it = runs_.find(id);
+    if (it == runs_.end()) return;
+    log("run " + id + " ends (" + why + "; " + std::to_string(it->second.requests) + " requests)");
+    runs_.erase(it);
   }
 
   // a run whose orchestrator went away without saying so: its instances go
@@ -165,7 +164,8 @@ class host {
       if (present) {
         ++it;
       } else {
-        log("run " + it->first + " ends (its orchestrator is gone)");
+        log("run " + it->first + " ends (its orchestrator is gone; " +
+            std::to_string(it->second.requests) + " requests)");
         it = runs_.erase(it);
       }
     }
@@ -208,7 +208,9 @@ class host {
       return;
     }
     run_state& rs = run_for(run_id, info.publication_handle);
+    ++rs.requests;
     stride_remote_reply reply{};
+    reply.ended = -1;
     reply.run = r.run;
     reply.seq = r.seq;
     reply.message = const_cast<char*>("");
@@ -224,11 +226,13 @@ class host {
       reply.run = r.run;
       reply.seq = r.seq;
       reply.status = static_cast<std::int32_t>(status::error);
+      reply.ended = -1;
       reply.message = message.data();
     }
     std::vector<stride_remote_log_line> lines;
     for (const auto& l : logged_) {
-      lines.push_back({static_cast<std::int32_t>(l.level), const_cast<char*>(l.category.c_str()),
+      lines.push_back({static_cast<std::int32_t>(l.level), const_cast<char*>(l.source.c_str()),
+                       const_cast<char*>(l.category.c_str()),
                        const_cast<char*>(l.message.c_str())});
     }
     reply.log._length = reply.log._maximum = static_cast<std::uint32_t>(lines.size());
@@ -252,9 +256,10 @@ class host {
         cosim::instance_options io;
         io.logging_on = r.logging;
         // what the component logs goes back with the reply of the request being served
-        io.log = [this](cosim::log_level level, std::string_view, std::string_view category,
+        io.log = [this](cosim::log_level level, std::string_view source, std::string_view category,
                         std::string_view message) {
-          logged_.push_back({level, std::string(category), std::string(message)});
+          logged_.push_back(
+              {level, std::string(source), std::string(category), std::string(message)});
         };
         rs.instances[r.component].component = f->second->instantiate(r.component, io);
         return status::ok;
@@ -315,8 +320,25 @@ class host {
         find(rs, r.component).component->terminate();
         return status::ok;
       case op::free_instance:
+        std::erase_if(rs.groups, [&](const auto& g) { return g.second.has_member(r.component); });
         rs.instances.erase(r.component);
         return status::ok;
+      case op::group_setup: {
+        // a new setup (after a restore) replaces the group
+        rs.groups.erase(r.component);
+        rs.groups.try_emplace(r.component, r, [&](const std::string& name) -> instance& {
+          return find(rs, name.c_str());
+        });
+        return status::ok;
+      }
+      case op::group_step: {
+        const auto g = rs.groups.find(r.component);
+        if (g == rs.groups.end()) {
+          throw std::runtime_error(std::string("no step group '") + r.component + "'");
+        }
+        g->second.step(r, reply);
+        return reply.ended >= 0 ? status::terminate : status::ok;
+      }
       case op::end_run:
         break;
     }
@@ -338,6 +360,7 @@ class host {
   std::map<std::string, run_state> runs_;
   struct log_entry {
     cosim::log_level level;
+    std::string source;
     std::string category;
     std::string message;
   };

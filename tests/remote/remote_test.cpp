@@ -84,7 +84,7 @@ TEST_F(remote_run, a_component_on_a_worker_gives_the_same_csv_as_in_process) {
   EXPECT_GT(results("local").size(), 1000u);
   EXPECT_EQ(results("remote"), results("local"));  // byte for byte
   EXPECT_THAT(w.output(), AllOf(HasSubstr("loaded stride_test"), HasSubstr(" begins"),
-                                HasSubstr("ends (its orchestrator said so)")));
+                                HasSubstr("ends (its orchestrator said so; ")));
 }
 
 TEST_F(remote_run, components_on_two_workers_give_the_same_csv) {
@@ -149,6 +149,62 @@ TEST_F(remote_run, a_component_that_ends_the_run_on_a_worker_ends_it_here) {
   EXPECT_EQ(results("remote"), results("local"));
 }
 
+// the number of requests a worker served for its only run, from its "run … ends" line
+std::uint64_t requests_served(const std::string& log) {
+  const auto end = log.find(" requests)");
+  if (end == std::string::npos) return 0;
+  const auto start = log.rfind(' ', end - 1);
+  return std::stoull(log.substr(start + 1, end - start - 1));
+}
+
+TEST_F(remote_run, connected_components_on_one_worker_step_together_in_one_request_per_step) {
+  auto w1 = start_worker("w1", 74);
+  auto w2 = start_worker("w2", 74);
+  ASSERT_TRUE(w1.ready() && w2.ready()) << w1.output() << w2.output();
+  ASSERT_EQ(run(pair("local.xml", 300, "", ""), "local", "").exit_code, 0);
+  // a → b on one worker: one group
+  const auto grouped = run_command(
+      "'" + k_cli + "' run " + quoted(pair("grouped.xml", 300, "worker=\"w1\"", "worker=\"w1\"")) +
+          " --domain 74 --output " + quoted(scratch.path() / "grouped"),
+      scratch.path());
+  ASSERT_EQ(grouped.exit_code, 0) << grouped.err;
+  EXPECT_THAT(grouped.err, HasSubstr("a, b step together on worker 'w1'"));
+  EXPECT_EQ(results("grouped"), results("local"));
+  // the same pair over two workers: a request per component and step
+  const auto split =
+      run(pair("split.xml", 300, "worker=\"w1\"", "worker=\"w2\""), "split", "--domain 74");
+  ASSERT_EQ(split.exit_code, 0) << split.err;
+  EXPECT_EQ(results("split"), results("local"));
+  w1.stop(SIGTERM);
+  w2.stop(SIGTERM);
+  const std::string log1 = w1.output();
+  const auto first_run_end = log1.find(" requests)");
+  ASSERT_NE(first_run_end, std::string::npos) << log1;
+  const std::uint64_t grouped_requests = requests_served(log1.substr(0, first_run_end + 10));
+  const std::uint64_t split_requests = requests_served(w2.output());
+  EXPECT_GE(grouped_requests, 300u);
+  EXPECT_LT(grouped_requests, 300u + 40u) << log1;  // 300 steps, a few for loading and setup
+  EXPECT_GE(split_requests, 300u);                  // b alone on w2, stepped every step
+}
+
+TEST_F(remote_run, a_member_of_a_group_that_fails_or_ends_the_run_is_named) {
+  auto w = start_worker("w1", 75);
+  ASSERT_TRUE(w.ready()) << w.output();
+  const std::string both = "worker=\"w1\"";
+  const auto failed =
+      run(pair("failing.xml", 100, both, both), "failing", "--domain 75 --set a.fail_at_step=7");
+  EXPECT_EQ(failed.exit_code, 1);
+  EXPECT_THAT(failed.err,
+              AllOf(HasSubstr("step group a+b on worker 'w1'"), HasSubstr("component 'a'"),
+                    HasSubstr("step 7 fails on request"), HasSubstr("t = 0.06 s")));
+  ASSERT_EQ(run(pair("local.xml", 100, "", ""), "local", "--set b.stop_after_steps=12").exit_code,
+            0);
+  const auto ended =
+      run(pair("ends.xml", 100, both, both), "ends", "--domain 75 --set b.stop_after_steps=12");
+  ASSERT_EQ(ended.exit_code, 0) << ended.err;
+  EXPECT_EQ(results("ends"), results("local"));
+}
+
 TEST_F(remote_run, a_missing_worker_is_a_timeout_error) {
   const auto r = run(pair("remote.xml", 10, "", "worker=\"nobody\""), "remote",
                      "--domain 66 --worker-timeout 0.5");
@@ -190,7 +246,7 @@ TEST_F(remote_run, a_worker_drops_the_run_of_an_orchestrator_that_died) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   ::kill(run_pid, SIGKILL);
   ::waitpid(run_pid, nullptr, 0);
-  EXPECT_TRUE(w.wait_for("ends (its orchestrator is gone)")) << w.output();
+  EXPECT_TRUE(w.wait_for("ends (its orchestrator is gone; ")) << w.output();
   // and serves the next run
   ASSERT_EQ(run(pair("local.xml", 50, "", ""), "local", "").exit_code, 0);
   const auto next = run(pair("next.xml", 50, "", "worker=\"w1\""), "next", "--domain 68");
@@ -227,6 +283,12 @@ TEST_F(remote_run, validate_and_inspect_say_where_each_component_runs_without_a_
   EXPECT_THAT(validated.out, AllOf(HasSubstr("OK"), HasSubstr("placement:")));
   EXPECT_THAT(validated.out, ::testing::ContainsRegex("a +this process"));
   EXPECT_THAT(validated.out, ::testing::ContainsRegex("b +worker w9"));
+  EXPECT_THAT(validated.out, ::testing::Not(HasSubstr("step together")));
+  const auto both = run_command(
+      "'" + k_cli + "' validate " + quoted(pair("both.xml", 10, "worker=\"w9\"", "worker=\"w9\"")),
+      scratch.path());
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_THAT(both.out, HasSubstr("a, b step together on worker w9"));
   const auto inspected = run_command("'" + k_cli + "' inspect " + quoted(system), scratch.path());
   ASSERT_EQ(inspected.exit_code, 0) << inspected.err;
   EXPECT_THAT(inspected.out, ::testing::ContainsRegex("b +worker w9 +stride_test"));
@@ -242,6 +304,20 @@ TEST_F(remote_run, the_walk_with_the_robot_on_a_worker_equals_the_walk_in_proces
   const auto remote = run(k_source / "models/distributed/walk-robot-on-worker.xml", "remote",
                           "--stop-time 10 --domain 71");
   ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_EQ(results("remote"), results("local"));
+}
+
+// group placement: the gait generator and the robot step together on the worker
+TEST_F(remote_run, the_walk_with_gait_and_robot_on_one_worker_equals_the_walk_in_process) {
+  auto w = start_worker("w1", 76);
+  ASSERT_TRUE(w.ready()) << w.output();
+  ASSERT_EQ(run(k_source / "models/walk.xml", "local", "--stop-time 10").exit_code, 0);
+  const auto remote = run_command(
+      "'" + k_cli + "' run " + quoted(k_source / "models/distributed/walk-on-one-worker.xml") +
+          " --stop-time 10 --domain 76 --output " + quoted(scratch.path() / "remote"),
+      scratch.path());
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_THAT(remote.err, HasSubstr("gait, robot step together on worker 'w1'"));
   EXPECT_EQ(results("remote"), results("local"));
 }
 

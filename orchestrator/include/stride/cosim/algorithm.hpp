@@ -14,6 +14,7 @@
 
 #include "stride/cosim/component.hpp"
 #include "stride/cosim/connection_graph.hpp"
+#include "stride/cosim/step_group.hpp"
 #include "stride/cosim/time.hpp"
 
 namespace stride::cosim {
@@ -35,13 +36,21 @@ struct start_values {
   value_block values;
 };
 
+/// Components that step as one unit (step_group.hpp).
+struct group_wiring {
+  std::vector<std::size_t> members;  ///< component indices, ascending: the group's member list
+  step_group* stepper = nullptr;
+};
+
 /// What the execution hands to its algorithm when it freezes: the components it owns (alive as
-/// long as the algorithm), their step multiples, the validated connections and the start values.
+/// long as the algorithm), their step multiples, the validated connections, the start values and
+/// the step groups.
 struct system_wiring {
   std::vector<component*> components;
   std::vector<int> step_multiples;
   std::vector<connection> connections;
   std::vector<start_values> starts;  ///< per component
+  std::vector<group_wiring> groups;  ///< disjoint
 };
 
 /// Why `step()` ended.
@@ -92,7 +101,8 @@ class algorithm {
 /// Fixed base step with per-component step multiples (decimation), Gauss-Seidel or Jacobi
 /// transfer. Components that share no value within a macro step step concurrently on `threads`
 /// threads; any thread count gives bit-identical results (each component reads exactly the
-/// values it would read stepping alone, in stepping order).
+/// values it would read stepping alone, in stepping order). A step group steps as one unit at the
+/// place of its first member; its members keep their own order among themselves.
 class fixed_step_algorithm final : public algorithm {
  public:
   /// \pre base_step > 0, threads ≥ 1. \throws validation_error otherwise.

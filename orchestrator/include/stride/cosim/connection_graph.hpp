@@ -77,6 +77,30 @@ struct step_plan {
 step_plan plan_steps(const std::vector<std::size_t>& order,
                      const std::vector<connection>& connections, bool independent);
 
+/// Components stepped as one unit: each step group is a unit, every other component a unit of
+/// its own. Units are numbered in the order of their smallest component index, so that among
+/// units the declaration order is kept.
+struct step_units {
+  std::vector<std::size_t> unit_of;               ///< per component
+  std::vector<std::vector<std::size_t>> members;  ///< per unit, ascending
+};
+
+/// The units of `groups` (disjoint sets of component indices) among `component_count`.
+step_units make_units(std::size_t component_count,
+                      const std::vector<std::vector<std::size_t>>& groups);
+
+/// The connections between different units, with unit numbers in place of component indices.
+std::vector<connection> connections_between(const step_units& units,
+                                            const std::vector<connection>& connections);
+
+/// Which of `groups` may step as one unit under Gauss-Seidel without changing any value: a group
+/// may not lie on a same-step cycle (non-delayed connections) through components outside it,
+/// since its members would then need values from outside between their own steps. Groups are
+/// refused until the others are free of such cycles; the result says, per group, whether kept.
+std::vector<bool> steppable_groups(std::size_t component_count,
+                                   const std::vector<connection>& connections,
+                                   const std::vector<std::vector<std::size_t>>& groups);
+
 }  // namespace stride::cosim
 
 #endif  // STRIDE_COSIM_CONNECTION_GRAPH_HPP

@@ -22,6 +22,7 @@
 #include "stride/cosim/connection_graph.hpp"
 #include "stride/cosim/log.hpp"
 #include "stride/cosim/scalar_value.hpp"
+#include "stride/cosim/step_group.hpp"
 #include "stride/cosim/time.hpp"
 
 namespace stride::cosim {
@@ -79,6 +80,12 @@ class execution {
   /// Adds a component that steps every `step_multiple` base steps; returns its index.
   /// \throws validation_error after freeze(), for a duplicate name or a multiple < 1.
   std::size_t add_component(std::unique_ptr<component> c, int step_multiple = 1);
+  /// Makes the components `members` (indices, at least two) step as one unit through `group`,
+  /// which steps them where they run (step_group.hpp). \throws validation_error after freeze(),
+  /// for an unknown index or a component already in a group.
+  void add_group(std::vector<std::size_t> members, std::unique_ptr<step_group> group);
+  /// The step groups' members (component indices, ascending), in the order they were added.
+  const std::vector<std::vector<std::size_t>>& groups() const noexcept { return group_members_; }
   /// Connects an output to an input (or parameter). Checked in freeze().
   void connect(variable_id from, variable_id to, connection_options options = {});
   /// Value set before initialization (parameters, start values of inputs).
@@ -153,6 +160,8 @@ class execution {
   std::unique_ptr<stride::cosim::algorithm> algo_;
   log_sink log_;
   std::vector<std::unique_ptr<component>> components_;
+  std::vector<std::vector<std::size_t>> group_members_;
+  std::vector<std::unique_ptr<step_group>> groups_;
   std::vector<int> multiples_;
   std::vector<connection> connections_;
   std::vector<start_values> starts_;

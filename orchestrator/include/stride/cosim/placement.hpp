@@ -12,6 +12,7 @@
 #include "stride/cosim/component.hpp"
 #include "stride/cosim/fmu.hpp"
 #include "stride/cosim/log.hpp"
+#include "stride/cosim/step_group.hpp"
 #include "stride/cosim/system_structure.hpp"
 
 namespace stride::cosim {
@@ -36,6 +37,11 @@ class placement_resolver {
                                             const placement_context& context) = 0;
   /// The FMU file a created component came from (for reports), empty if none.
   virtual std::filesystem::path source_of(const component_spec& /*spec*/) const { return {}; }
+  /// A step group for `members`: components this resolver created for one worker and connected
+  /// to each other, which may step there together; nullptr when they step one by one.
+  virtual std::unique_ptr<step_group> create_group(const std::vector<component*>& /*members*/) {
+    return nullptr;
+  }
 };
 
 /// Components made by a function (tests; tools that prepare their components themselves): it

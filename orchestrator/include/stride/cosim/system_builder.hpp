@@ -51,6 +51,8 @@ struct component_info {
 struct built_system {
   std::unique_ptr<stride::cosim::execution> execution;
   std::vector<component_info> components;
+  /// the components that step together on their worker (indices into `components`)
+  std::vector<std::vector<std::size_t>> groups;
   duration base_step{};
   time_point start{};
   time_point stop{};
@@ -61,6 +63,14 @@ struct built_system {
 /// The stop time must be set (`system.stop`) and (stop - start) must be a whole number of base
 /// steps. \throws validation_error / fmu_import_error / component_error naming file and line.
 built_system build_system(const system_structure& system, const build_options& options = {});
+
+/// The components that step together on their worker: the sets (two or more, indices
+/// ascending) of components with the same `workers[i]` (empty: this process, never grouped)
+/// connected to each other, except those that may not step as one unit
+/// (steppable_groups(), Gauss-Seidel only). Valid before and after freeze().
+std::vector<std::vector<std::size_t>> worker_groups(const execution& ex,
+                                                    const std::vector<std::string>& workers,
+                                                    algorithm_kind kind);
 
 /// Expands the variable part of a connection side ("var", "var[*]", "var[2:5]") into variable
 /// indices of `md`, in ascending index order. \throws validation_error.

@@ -27,6 +27,10 @@ class remote_placement final : public cosim::placement_resolver {
   std::unique_ptr<cosim::component> create(const cosim::component_spec& spec,
                                            const cosim::placement_context& context) override;
   std::filesystem::path source_of(const cosim::component_spec& spec) const override;
+  /// A group stepping on the members' worker, when all are proxies this placement made for one
+  /// worker; nullptr otherwise.
+  std::unique_ptr<cosim::step_group> create_group(
+      const std::vector<cosim::component*>& members) override;
 
  private:
   dds_settings settings_;
