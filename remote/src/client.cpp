@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "stride/cosim/error.hpp"
+
 namespace stride::remote {
 
 namespace {
@@ -105,8 +107,7 @@ dds_entity_t client::connect(const std::string& worker) {
   using clock = std::chrono::steady_clock;
   const auto until = clock::now() + limits_.connect;
   const auto seconds = std::to_string(limits_.connect.count() / 1000.0);
-  dds_instance_handle_t announcement = 0;
-  while ((announcement = announcement_of(worker)) == 0) {
+  while (announcement_of(worker) == 0) {
     if (clock::now() >= until) {
       throw std::runtime_error("worker '" + worker + "' did not appear on DDS domain " +
                                std::to_string(settings_.domain) + " within " +
@@ -127,14 +128,21 @@ dds_entity_t client::connect(const std::string& worker) {
     throw std::runtime_error("worker '" + worker + "' is announced on DDS domain " +
                              std::to_string(settings_.domain) + " but does not take requests");
   }
-  // the worker's replies reach this run only once its reply writer has matched our reader
-  const dds_instance_handle_t participant = dds::participant_of(announcements_.get(), announcement);
-  while (!dds::matches_writer_of(replies_.get(), participant)) {
+  // Requests sent before the worker's reader has matched this writer, and replies sent before
+  // the run's reply writer on the worker has matched our reader, are lost (volatile data): a
+  // hello is repeated until one is answered, and then both directions are open.
+  for (auto wait = std::chrono::milliseconds(20);; wait = std::min(2 * wait, limits_.poll)) {
+    stride_remote_request hello{};
+    hello.op = static_cast<std::int32_t>(op::hello);
+    hello.component = const_cast<char*>("");
+    hello.text = const_cast<char*>("");
+    const std::uint64_t seen = arrivals_.load(std::memory_order_acquire);
+    const std::uint64_t seq = send(writer.get(), worker, hello);
+    if (wait_reply(seq, seen, worker, clock::now() + wait)) break;
     if (clock::now() >= until + std::chrono::milliseconds(1000)) {
       throw std::runtime_error("worker '" + worker + "' is announced on DDS domain " +
-                               std::to_string(settings_.domain) + " but its replies do not arrive");
+                               std::to_string(settings_.domain) + " but does not answer");
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   const dds_entity_t w = writer.get();
   workers_.emplace(worker, std::make_pair(std::move(publisher), std::move(writer)));
@@ -152,17 +160,41 @@ void client::take_replies() {
                                      });
   if (got.empty()) return;
   std::lock_guard lock(mutex_);
+  for (auto it = got.begin(); it != got.end();) {
+    it = abandoned_.erase(it->first) > 0 ? got.erase(it) : std::next(it);
+  }
   arrived_.merge(got);
   arrivals_.fetch_add(1, std::memory_order_release);
   arrived_cv_.notify_all();
 }
 
-reply_data client::call(dds_entity_t writer, const std::string& worker, stride_remote_request& r) {
+reply_data client::call_for(const std::string& who, dds_entity_t writer, const std::string& worker,
+                            stride_remote_request& r,
+                            const std::function<void(const reply_data::log_line&)>& forward) {
+  // the algorithm adds the simulated time of a failed step
+  const std::string where = who + ": " + to_string(static_cast<op>(r.op)) + ": ";
+  reply_data reply;
+  try {
+    reply = call(writer, worker, r);
+  } catch (const std::exception& e) {
+    throw cosim::component_error(where + e.what());
+  }
+  for (const auto& l : reply.log) forward(l);
+  if (reply.result == status::error) throw cosim::component_error(where + reply.message);
+  return reply;
+}
+
+std::uint64_t client::send(dds_entity_t writer, const std::string& worker,
+                           stride_remote_request& r) {
   r.run = const_cast<char*>(run_.c_str());
   r.seq = ++next_seq_;
-  const std::uint64_t seq = r.seq;
-  const std::uint64_t seen = arrivals_.load(std::memory_order_acquire);
   dds::check(dds_write(writer, &r), "request to worker '" + worker + "'");
+  return r.seq;
+}
+
+std::optional<reply_data> client::wait_reply(
+    std::uint64_t seq, std::uint64_t seen, const std::string& worker,
+    std::optional<std::chrono::steady_clock::time_point> until) {
   // a short step's reply comes back within tens of microseconds: watching for it saves the
   // wake-up of a sleeping thread, which costs as much again on a virtual machine
   const auto spin_until = std::chrono::steady_clock::now() + limits_.spin;
@@ -178,17 +210,33 @@ reply_data client::call(dds_entity_t writer, const std::string& worker, stride_r
       arrived_.erase(it);
       return out;
     }
-    if (arrived_cv_.wait_for(lock, limits_.poll) == std::cv_status::timeout &&
+    const auto wake = until ? std::min(*until, std::chrono::steady_clock::now() + limits_.poll)
+                            : std::chrono::steady_clock::now() + limits_.poll;
+    if (arrived_cv_.wait_until(lock, wake) == std::cv_status::timeout &&
         arrived_.find(seq) == arrived_.end()) {
       lock.unlock();
+      // a reply the listener has not passed on (should DDS not call it again for samples that
+      // arrive while it runs) is taken here, at the latest one poll later
+      take_replies();
       const bool still_there = alive(worker);
       lock.lock();
+      if (arrived_.find(seq) != arrived_.end()) continue;
       if (!still_there) {
         throw std::runtime_error("worker '" + worker + "' is gone (its liveliness on DDS domain " +
                                  std::to_string(settings_.domain) + " lapsed)");
       }
+      if (until && std::chrono::steady_clock::now() >= *until) {
+        abandoned_.insert(seq);  // should it come after all, it is dropped
+        return std::nullopt;
+      }
     }
   }
+}
+
+reply_data client::call(dds_entity_t writer, const std::string& worker, stride_remote_request& r) {
+  const std::uint64_t seen = arrivals_.load(std::memory_order_acquire);
+  const std::uint64_t seq = send(writer, worker, r);
+  return *wait_reply(seq, seen, worker, std::nullopt);
 }
 
 }  // namespace stride::remote

@@ -7,8 +7,11 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,7 +59,22 @@ class client {
   /// \throws std::runtime_error when the worker's liveliness lapses meanwhile.
   reply_data call(dds_entity_t writer, const std::string& worker, stride_remote_request& r);
 
+  /// call() on behalf of a component or group (`who`, e.g. "component 'x' on worker 'w'"): the
+  /// reply's log lines go to `forward`; a lost worker or an error reply becomes a
+  /// cosim::component_error starting with `who` and the operation.
+  reply_data call_for(const std::string& who, dds_entity_t writer, const std::string& worker,
+                      stride_remote_request& r,
+                      const std::function<void(const reply_data::log_line&)>& forward);
+
  private:
+  // writes `r` with this run's id and a fresh sequence number; returns the number
+  std::uint64_t send(dds_entity_t writer, const std::string& worker, stride_remote_request& r);
+  // waits for the reply to `seq` (`seen`: arrivals_ before sending); nullopt at `until`.
+  // \throws std::runtime_error when the worker's liveliness lapses meanwhile.
+  std::optional<reply_data> wait_reply(std::uint64_t seq, std::uint64_t seen,
+                                       const std::string& worker,
+                                       std::optional<std::chrono::steady_clock::time_point> until);
+
   // the writer handle of the worker's live announcement, 0 when it has none
   dds_instance_handle_t announcement_of(const std::string& worker);
   bool alive(const std::string& worker);
@@ -76,6 +94,7 @@ class client {
   std::mutex mutex_;
   std::condition_variable arrived_cv_;
   std::map<std::uint64_t, reply_data> arrived_;
+  std::set<std::uint64_t> abandoned_;       // requests no longer waited for (unanswered hellos)
   std::atomic<std::uint64_t> arrivals_{0};  // batches of replies taken so far
 };
 

@@ -96,20 +96,27 @@ dds_qos_t* announcement_qos(std::chrono::milliseconds lease) {
   return qos;
 }
 
-entity make_publisher(dds_entity_t participant, const std::string& partition) {
+namespace {
+
+// a publisher or subscriber (made by `create`) whose QoS names one partition
+template <class Create>
+entity partitioned(dds_entity_t participant, const std::string& partition, Create create,
+                   const char* what) {
   dds_qos_t* qos = dds_create_qos();
   dds_qset_partition1(qos, partition.c_str());
-  const dds_entity_t p = dds_create_publisher(participant, qos, nullptr);
+  const dds_entity_t e = create(participant, qos, nullptr);
   dds_delete_qos(qos);
-  return entity(check(p, "publisher for partition " + partition));
+  return entity(check(e, std::string(what) + " for partition " + partition));
+}
+
+}  // namespace
+
+entity make_publisher(dds_entity_t participant, const std::string& partition) {
+  return partitioned(participant, partition, dds_create_publisher, "publisher");
 }
 
 entity make_subscriber(dds_entity_t participant, const std::string& partition) {
-  dds_qos_t* qos = dds_create_qos();
-  dds_qset_partition1(qos, partition.c_str());
-  const dds_entity_t s = dds_create_subscriber(participant, qos, nullptr);
-  dds_delete_qos(qos);
-  return entity(check(s, "subscriber for partition " + partition));
+  return partitioned(participant, partition, dds_create_subscriber, "subscriber");
 }
 
 bool wait_for_reader(dds_entity_t writer, std::chrono::milliseconds timeout) {
@@ -121,23 +128,6 @@ bool wait_for_reader(dds_entity_t writer, std::chrono::milliseconds timeout) {
     if (std::chrono::steady_clock::now() >= until) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-}
-
-dds_instance_handle_t participant_of(dds_entity_t reader, dds_instance_handle_t publication) {
-  dds_builtintopic_endpoint_t* e = dds_get_matched_publication_data(reader, publication);
-  if (e == nullptr) return 0;
-  const dds_instance_handle_t p = e->participant_instance_handle;
-  dds_builtintopic_free_endpoint(e);
-  return p;
-}
-
-bool matches_writer_of(dds_entity_t reader, dds_instance_handle_t participant) {
-  dds_instance_handle_t handles[256];
-  const dds_return_t n = dds_get_matched_publications(reader, handles, 256);
-  for (dds_return_t i = 0; i < n && i < 256; ++i) {
-    if (participant_of(reader, handles[i]) == participant) return true;
-  }
-  return false;
 }
 
 }  // namespace stride::remote::dds

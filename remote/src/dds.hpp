@@ -71,11 +71,6 @@ entity make_subscriber(dds_entity_t participant, const std::string& partition);
 /// Waits until `writer` has at least one matched reader. Returns false on timeout.
 bool wait_for_reader(dds_entity_t writer, std::chrono::milliseconds timeout);
 
-/// The participant (instance handle) of the writer `publication` that `reader` matched, or 0.
-dds_instance_handle_t participant_of(dds_entity_t reader, dds_instance_handle_t publication);
-/// Whether `reader` matches a writer of the participant `participant`.
-bool matches_writer_of(dds_entity_t reader, dds_instance_handle_t participant);
-
 /// Takes every available sample of `reader` and calls `f(sample, info)` for each valid one.
 template <class T, class F>
 void take_all(dds_entity_t reader, F&& f) {

@@ -8,6 +8,8 @@ namespace stride::remote {
 
 std::string to_string(op o) {
   switch (o) {
+    case op::hello:
+      return "hello";
     case op::load:
       return "load";
     case op::instantiate:

@@ -18,6 +18,7 @@ namespace stride::remote {
 
 /// What a request asks of the worker.
 enum class op : std::int32_t {
+  hello = 0,    ///< handshake: answered once both directions of the run's path are matched
   load = 1,     ///< text: content hash; blob: the FMU archive or empty ("do you have it?")
   instantiate,  ///< component: instance name; text: content hash
   setup,        ///< t_ns: start; dt_ns: stop or -1
@@ -48,11 +49,9 @@ enum class status : std::int32_t {
 
 std::string to_string(op o);
 
-/// Partition of a worker's requests, of a run's replies, and of every run's replies (a pattern
-/// the workers publish on: one reply writer serves every run).
+/// Partition of a worker's requests, and of a run's replies.
 std::string worker_partition(const std::string& worker);
 std::string run_partition(const std::string& run);
-inline constexpr const char* k_every_run_partition = "stride.run.*";
 
 /// Lowercase hex SHA-256 of `bytes`: the name an FMU archive is cached under.
 std::string content_hash(std::span<const std::byte> bytes);

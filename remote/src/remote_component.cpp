@@ -17,7 +17,7 @@ remote_component::remote_component(std::shared_ptr<client> link, std::string wor
   stride_remote_request r = request(op::instantiate);
   r.text = hash.data();
   r.logging = debug_logging;
-  call(op::instantiate, r);
+  call(r);
 }
 
 stride_remote_request remote_component::request(op o) const {
@@ -28,20 +28,9 @@ stride_remote_request remote_component::request(op o) const {
   return r;
 }
 
-reply_data remote_component::call(op o, stride_remote_request& r) {
-  // the algorithm adds the simulated time of a failed step
-  const auto where = [&] {
-    return "component '" + name_ + "' on worker '" + worker_ + "': " + to_string(o) + ": ";
-  };
-  reply_data reply;
-  try {
-    reply = link_->call(writer_, worker_, r);
-  } catch (const std::exception& e) {
-    throw cosim::component_error(where() + e.what());
-  }
-  for (const auto& l : reply.log) forward_log(l);
-  if (reply.result == status::error) throw cosim::component_error(where() + reply.message);
-  return reply;
+reply_data remote_component::call(stride_remote_request& r) {
+  return link_->call_for("component '" + name_ + "' on worker '" + worker_ + "'", writer_, worker_,
+                         r, [this](const reply_data::log_line& l) { forward_log(l); });
 }
 
 void remote_component::forward_log(const reply_data::log_line& line) const {
@@ -52,22 +41,22 @@ void remote_component::setup(cosim::time_point start, std::optional<cosim::time_
   stride_remote_request r = request(op::setup);
   r.t_ns = start.time_since_epoch().count();
   r.dt_ns = stop ? stop->time_since_epoch().count() : -1;
-  call(op::setup, r);
+  call(r);
 }
 
 void remote_component::enter_initialization() {
   stride_remote_request r = request(op::enter_initialization);
-  call(op::enter_initialization, r);
+  call(r);
 }
 
 void remote_component::exit_initialization() {
   stride_remote_request r = request(op::exit_initialization);
-  call(op::exit_initialization, r);
+  call(r);
 }
 
 void remote_component::terminate() {
   stride_remote_request r = request(op::terminate);
-  call(op::terminate, r);
+  call(r);
 }
 
 void remote_component::set_values(const cosim::variable_refs& refs,
@@ -76,13 +65,13 @@ void remote_component::set_values(const cosim::variable_refs& refs,
   wire_storage storage;
   put_values(values, r.data, storage);
   put_refs(refs, r.more);
-  call(op::set_values, r);
+  call(r);
 }
 
 void remote_component::get_values(const cosim::variable_refs& refs, cosim::value_block& values) {
   stride_remote_request r = request(op::get_values);
   put_refs(refs, r.data);
-  reply_data reply = call(op::get_values, r);
+  reply_data reply = call(r);
   if (!fits(reply.values, refs)) {
     throw cosim::component_error("component '" + name_ + "' on worker '" + worker_ +
                                  "': get_values: the reply does not hold the values asked for");
@@ -95,7 +84,7 @@ void remote_component::expose(const cosim::variable_refs& inputs,
   stride_remote_request r = request(op::expose);
   put_refs(inputs, r.data);
   put_refs(outputs, r.more);
-  call(op::expose, r);
+  call(r);
   outputs_ = outputs;
 }
 
@@ -107,7 +96,7 @@ cosim::step_result remote_component::step(cosim::time_point t, cosim::duration d
   r.dt_ns = dt.count();
   wire_storage storage;
   put_values(inputs, r.data, storage);
-  reply_data reply = call(op::step, r);
+  reply_data reply = call(r);
   if (reply.result == status::terminate) return cosim::step_result::terminate;
   if (!fits(reply.values, outputs_)) {
     throw cosim::component_error("component '" + name_ + "' on worker '" + worker_ +
@@ -119,13 +108,13 @@ cosim::step_result remote_component::step(cosim::time_point t, cosim::duration d
 
 std::vector<std::byte> remote_component::save_state() {
   stride_remote_request r = request(op::save_state);
-  return call(op::save_state, r).blob;
+  return call(r).blob;
 }
 
 void remote_component::restore_state(std::span<const std::byte> state) {
   stride_remote_request r = request(op::restore_state);
   put_blob(state, r.blob);
-  call(op::restore_state, r);
+  call(r);
 }
 
 }  // namespace stride::remote

@@ -45,7 +45,7 @@ class remote_component final : public cosim::component {
   // a request for this instance, strings set
   stride_remote_request request(op o) const;
   // sends it; a reply with an error becomes a component_error naming worker and component
-  reply_data call(op o, stride_remote_request& r);
+  reply_data call(stride_remote_request& r);
 
   std::shared_ptr<client> link_;
   dds_entity_t writer_ = 0;

@@ -27,23 +27,13 @@ stride_remote_request remote_group::request(op o) {
   return r;
 }
 
-reply_data remote_group::call(op o, stride_remote_request& r) {
-  const auto where = [&] {
-    return "step group " + name_ + " on worker '" + worker_ + "': " + to_string(o) + ": ";
-  };
-  reply_data reply;
-  try {
-    reply = link_->call(writer_, worker_, r);
-  } catch (const std::exception& e) {
-    throw cosim::component_error(where() + e.what());
-  }
-  for (const auto& l : reply.log) {
-    for (auto* m : members_) {
-      if (m->name() == l.source) m->forward_log(l);
-    }
-  }
-  if (reply.result == status::error) throw cosim::component_error(where() + reply.message);
-  return reply;
+reply_data remote_group::call(stride_remote_request& r) {
+  return link_->call_for("step group " + name_ + " on worker '" + worker_ + "'", writer_, worker_,
+                         r, [this](const reply_data::log_line& l) {
+                           for (auto* m : members_) {
+                             if (m->name() == l.source) m->forward_log(l);
+                           }
+                         });
 }
 
 void remote_group::arrange(cosim::group_layout layout) {
@@ -77,7 +67,7 @@ void remote_group::prepare(std::span<const cosim::member_cache> members) {
   r.links._length = r.links._maximum = static_cast<std::uint32_t>(links.size());
   r.links._buffer = links.data();
   r.links._release = false;
-  call(op::group_setup, r);
+  call(r);
   for (auto& w : wire_members_) w.published = {};  // steps carry inputs only
 }
 
@@ -95,7 +85,7 @@ std::optional<std::size_t> remote_group::step(cosim::time_point t, std::int64_t 
   r.index = index;
   for (std::size_t k = 0; k < n; ++k)
     put_values(*inputs[k], wire_members_[k].latest, storage_[2 * k]);
-  reply_data reply = call(op::group_step, r);
+  reply_data reply = call(r);
   if (reply.outputs.size() != n || reply.ended >= static_cast<int>(n)) {
     throw cosim::component_error("step group " + name_ + " on worker '" + worker_ +
                                  "': group_step: the reply does not fit the group");

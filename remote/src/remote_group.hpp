@@ -29,7 +29,7 @@ class remote_group final : public cosim::step_group {
  private:
   stride_remote_request request(op o);
   // sends it; a reply with an error becomes a component_error naming the group and worker
-  reply_data call(op o, stride_remote_request& r);
+  reply_data call(stride_remote_request& r);
 
   std::shared_ptr<client> link_;
   dds_entity_t writer_ = 0;

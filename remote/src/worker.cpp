@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <atomic>
+#include <condition_variable>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -23,6 +25,7 @@ namespace {
 
 constexpr auto k_liveliness_lease = std::chrono::milliseconds(1000);
 constexpr auto k_poll = std::chrono::milliseconds(100);
+constexpr auto k_watch = std::chrono::microseconds(500);
 
 std::string host_name() {
   char host[256] = {};
@@ -46,6 +49,10 @@ using instance = hosted_instance;
 struct run_state {
   dds_instance_handle_t orchestrator = 0;  // the request writer of the run's orchestrator
   std::uint64_t requests = 0;              // served so far: reported when the run ends
+  // the run's own reply writer, in the run's partition: a run that stops acknowledging (its
+  // orchestrator gone) never holds up the replies of another
+  dds::entity reply_publisher;
+  dds::entity replies;
   std::map<std::string, instance> instances;
   std::map<std::string, hosted_group> groups;  // by group name; refer to instances: go first
 };
@@ -61,25 +68,17 @@ class host {
     check_name_is_free();
     request_subscriber_ = dds::make_subscriber(participant_.get(), worker_partition(name_));
     dds_qos_t* qos = dds::reliable_qos();
-    // requests are served on DDS's receive thread: no thread switch between arrival and step
+    // DDS's receive thread only signals: a reply written on it could block on a full history
+    // that only the same thread can drain (by taking the acknowledgements in)
     dds_listener_t* listener = dds_create_listener(this);
     dds_lset_data_available_arg(
-        listener, [](dds_entity_t, void* self) { static_cast<host*>(self)->take_requests(); }, this,
-        true);
+        listener, [](dds_entity_t, void* self) { static_cast<host*>(self)->signal_requests(); },
+        this, true);
     requests_ = dds::entity(dds::check(
         dds_create_reader(request_subscriber_.get(), topics_.request.get(), qos, listener),
         "request reader"));
     dds_delete_listener(listener);
     dds_delete_qos(qos);
-    // one writer for the replies of every run: made now, so that it has matched the reply
-    // reader of a run before the run's first request arrives (the orchestrator waits for that)
-    reply_publisher_ = dds::make_publisher(participant_.get(), k_every_run_partition);
-    qos = dds::reliable_qos();
-    replies_ = dds::entity(
-        dds::check(dds_create_writer(reply_publisher_.get(), topics_.reply.get(), qos, nullptr),
-                   "reply writer"));
-    dds_delete_qos(qos);
-
     qos = dds::announcement_qos(k_liveliness_lease);
     announcer_ = dds::entity(
         dds::check(dds_create_writer(participant_.get(), topics_.worker_info.get(), qos, nullptr),
@@ -97,16 +96,48 @@ class host {
 
   ~host() { requests_.reset(); }  // no listener call after this
 
-  // the requests themselves are served by take_requests; this thread tidies up
+  // Serves requests on a thread of its own until `stop`; this thread tidies up.
   void serve(const std::atomic<bool>& stop) {
+    std::thread server([&] { serve_requests(stop); });
     while (!stop.load()) {
       std::this_thread::sleep_for(k_poll);
       std::lock_guard lock(mutex_);
       drop_vanished_runs();
+      ended_.clear();
     }
+    signal_requests();
+    server.join();
   }
 
  private:
+  void signal_requests() {
+    {
+      std::lock_guard lock(signal_mutex_);  // a server about to sleep sees it or is woken
+      signals_.fetch_add(1, std::memory_order_release);
+    }
+    signal_cv_.notify_one();
+  }
+
+  // The next request usually follows within tens of microseconds of a reply: the server watches
+  // for it for a while before it sleeps, since a wake-up costs about as much as the round trip.
+  // It also takes requests every poll, should a signal go missing.
+  void serve_requests(const std::atomic<bool>& stop) {
+    std::uint64_t served = 0;
+    while (!stop.load()) {
+      const auto watch_until = std::chrono::steady_clock::now() + k_watch;
+      while (signals_.load(std::memory_order_acquire) == served &&
+             std::chrono::steady_clock::now() < watch_until) {
+        std::this_thread::yield();
+      }
+      {
+        std::unique_lock lock(signal_mutex_);
+        signal_cv_.wait_for(lock, k_poll, [&] { return signals_.load() != served || stop.load(); });
+        served = signals_.load();
+      }
+      take_requests();
+    }
+  }
+
   void take_requests() {
     std::lock_guard lock(mutex_);
     dds::take_all<stride_remote_request>(
@@ -140,7 +171,14 @@ class host {
   run_state& run_for(const std::string& id, dds_instance_handle_t orchestrator) {
     const auto [it, fresh] = runs_.try_emplace(id);
     if (fresh) {
-      it->second.orchestrator = orchestrator;
+      run_state& rs = it->second;
+      rs.orchestrator = orchestrator;
+      rs.reply_publisher = dds::make_publisher(participant_.get(), run_partition(id));
+      dds_qos_t* qos = dds::reliable_qos();
+      rs.replies = dds::entity(
+          dds::check(dds_create_writer(rs.reply_publisher.get(), topics_.reply.get(), qos, nullptr),
+                     "reply writer for run " + id));
+      dds_delete_qos(qos);
       log("run " + id + " begins");
     }
     return it->second;
@@ -150,6 +188,8 @@ class host {
     const auto it = runs_.find(id);
     if (it == runs_.end()) return;
     log("run " + id + " ends (" + why + "; " + std::to_string(it->second.requests) + " requests)");
+    // DDS entities may not be deleted from a listener: the main thread deletes the run's writer
+    ended_.push_back(std::move(it->second));
     runs_.erase(it);
   }
 
@@ -238,13 +278,18 @@ class host {
     reply.log._length = reply.log._maximum = static_cast<std::uint32_t>(lines.size());
     reply.log._buffer = lines.data();
     reply.log._release = false;
-    dds_write(replies_.get(), &reply);
+    if (const dds_return_t rc = dds_write(rs.replies.get(), &reply); rc < 0) {
+      log("run " + run_id + ": the reply to request " + std::to_string(r.seq) +
+          " could not be sent (DDS error " + std::to_string(rc) + ")");
+    }
   }
 
   status serve_one(run_state& rs, const stride_remote_request& r, stride_remote_reply& reply,
                    wire_storage& storage, std::vector<std::byte>& blob) {
     const auto o = static_cast<op>(r.op);
     switch (o) {
+      case op::hello:  // the orchestrator's handshake: the run and its reply path now exist
+        return status::ok;
       case op::load:
         return load(r);
       case op::instantiate: {
@@ -352,12 +397,14 @@ class host {
   cosim::temp_dir cache_;  // shipped archives, by content hash
   dds::entity request_subscriber_;
   dds::entity requests_;
-  dds::entity reply_publisher_;
-  dds::entity replies_;  // writer
   dds::entity announcer_;
-  std::mutex mutex_;  // runs_ and fmus_: the receive thread serves, the main thread tidies
+  std::mutex mutex_;  // runs_ and fmus_: the server serves, the main thread tidies
+  std::mutex signal_mutex_;
+  std::condition_variable signal_cv_;
+  std::atomic<std::uint64_t> signals_{0};  // data-available signals from DDS so far
   std::map<std::string, std::shared_ptr<cosim::fmu>> fmus_;  // content hash → imported FMU
   std::map<std::string, run_state> runs_;
+  std::vector<run_state> ended_;  // runs ended by a request, deleted by the main thread
   struct log_entry {
     cosim::log_level level;
     std::string source;

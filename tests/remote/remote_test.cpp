@@ -72,6 +72,14 @@ class remote_run : public ::testing::Test {
                        scratch.path());
   }
   std::string results(const std::string& out) { return read(scratch.path() / out / "results.csv"); }
+  // the worker w1 on `domain` serves a fresh run: b placed on it gives the in-process CSV
+  void expect_next_run_served(int domain, int steps) {
+    ASSERT_EQ(run(pair("local.xml", steps, "", ""), "local", "").exit_code, 0);
+    const auto next = run(pair("next.xml", steps, "", "worker=\"w1\""), "next",
+                          "--domain " + std::to_string(domain));
+    ASSERT_EQ(next.exit_code, 0) << next.err;
+    EXPECT_EQ(results("next"), results("local"));
+  }
 };
 
 TEST_F(remote_run, a_component_on_a_worker_gives_the_same_csv_as_in_process) {
@@ -132,10 +140,7 @@ TEST_F(remote_run, an_error_on_the_worker_names_worker_component_and_time) {
   EXPECT_THAT(results("failing"), HasSubstr("\n0.06,"));
 
   // the worker outlives the failed run and serves the next one
-  ASSERT_EQ(run(pair("local.xml", 100, "", ""), "local", "").exit_code, 0);
-  const auto next = run(pair("next.xml", 100, "", "worker=\"w1\""), "next", "--domain 64");
-  ASSERT_EQ(next.exit_code, 0) << next.err;
-  EXPECT_EQ(results("next"), results("local"));
+  expect_next_run_served(64, 100);
 }
 
 TEST_F(remote_run, a_component_that_ends_the_run_on_a_worker_ends_it_here) {
@@ -248,10 +253,7 @@ TEST_F(remote_run, a_worker_drops_the_run_of_an_orchestrator_that_died) {
   ::waitpid(run_pid, nullptr, 0);
   EXPECT_TRUE(w.wait_for("ends (its orchestrator is gone; ")) << w.output();
   // and serves the next run
-  ASSERT_EQ(run(pair("local.xml", 50, "", ""), "local", "").exit_code, 0);
-  const auto next = run(pair("next.xml", 50, "", "worker=\"w1\""), "next", "--domain 68");
-  ASSERT_EQ(next.exit_code, 0) << next.err;
-  EXPECT_EQ(results("next"), results("local"));
+  expect_next_run_served(68, 50);
 }
 
 TEST_F(remote_run, a_second_worker_of_the_same_name_is_refused) {
