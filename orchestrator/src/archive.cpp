@@ -139,7 +139,8 @@ void extract_archive(const fs::path& archive, const fs::path& destination,
         opsys == ZIP_OPSYS_UNIX) {
       const auto mode = static_cast<mode_t>(attributes >> 16);
       if (S_ISLNK(mode)) fail("entry \"" + name + "\" is a symbolic link");
-      if (mode != 0 && !S_ISREG(mode) && !S_ISDIR(mode)) {
+      // permission bits without a file type (as some zip writers leave them) mean a plain entry
+      if ((mode & S_IFMT) != 0 && !S_ISREG(mode) && !S_ISDIR(mode)) {
         fail("entry \"" + name + "\" is not a regular file or directory");
       }
     }

@@ -2,6 +2,8 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -88,7 +90,7 @@ class fmu_component final : public component {
 
   ~fmu_component() override {
     if (instance_ == nullptr || fatal_) return;
-    if (initialized_ && !terminated_ && !failed_) fn_.fmi2Terminate(instance_);
+    if (may_terminate()) fn_.fmi2Terminate(instance_);
     fn_.fmi2FreeInstance(instance_);
   }
 
@@ -104,14 +106,16 @@ class fmu_component final : public component {
   }
   void enter_initialization() override {
     check("fmi2EnterInitializationMode", fn_.fmi2EnterInitializationMode(instance_));
-    initialized_ = true;
   }
   void exit_initialization() override {
     check("fmi2ExitInitializationMode", fn_.fmi2ExitInitializationMode(instance_));
+    stepping_ = true;
   }
 
+  // FMI 2.0 allows fmi2Terminate only after initialization (step mode) and not after an error;
+  // an instance still in initialization mode is only freed
   void terminate() override {
-    if (!initialized_ || terminated_ || failed_ || fatal_) return;
+    if (!may_terminate()) return;
     terminated_ = true;
     check("fmi2Terminate", fn_.fmi2Terminate(instance_));
   }
@@ -278,7 +282,9 @@ class fmu_component final : public component {
   log_sink log_;
   fmi2CallbackFunctions callbacks_;
   fmi2Component instance_ = nullptr;
-  bool initialized_ = false;
+  bool may_terminate() const { return stepping_ && !terminated_ && !failed_ && !fatal_; }
+
+  bool stepping_ = false;  // initialization mode left: step mode
   bool terminated_ = false;
   bool failed_ = false;
   bool fatal_ = false;
@@ -333,6 +339,16 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
     throw fmu_import_error(where + ": not a Co-Simulation FMU (no <CoSimulation> element)");
   }
   const std::string& id = p->md.co_simulation->model_identifier;
+  // it names the binary: a path here would load a library from outside the archive
+  const bool identifier = !id.empty() && !std::isdigit(static_cast<unsigned char>(id[0])) &&
+                          std::all_of(id.begin(), id.end(), [](char c) {
+                            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                          });
+  if (!identifier) {
+    throw fmu_import_error(where + ": modelIdentifier \"" + id +
+                           "\" is not a C identifier (FMI 2.0 requires one: it names the binary "
+                           "and prefixes its functions)");
+  }
   const fs::path binary = p->dir.path() / "binaries" / "linux64" / (id + ".so");
   if (!fs::is_regular_file(binary)) {
     throw fmu_import_error(where + ": missing binary binaries/linux64/" + id +

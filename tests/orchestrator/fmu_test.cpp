@@ -340,6 +340,21 @@ TEST_F(cosim_fmu_test, cli_run_writes_the_output_folder) {
   EXPECT_TRUE(fs::exists(out / "manifest.json"));
 }
 
+// FMI 2.0 allows fmi2Terminate only after initialization: when b fails during the initial
+// exchange, a (still in initialization mode) is freed without it
+TEST_F(cosim_fmu_test, an_initialization_failure_terminates_no_instance_in_initialization_mode) {
+  const std::string long_label(60,
+                               'x');  // a.echo = label + suffix: 70 characters, b.suffix holds 63
+  const auto r =
+      test::run_command("'" + k_cli + "' run " + quoted(k_data / "stride_test_pair.xml") +
+                            " --output " + quoted(scratch.path() / "init-fail") +
+                            " --set a.label=" + long_label + " --set a.suffix=abcdefghij --quiet",
+                        scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("component 'b': fmi2SetString returned fmi2Error (initialization"));
+  EXPECT_THAT(r.err, ::testing::Not(HasSubstr("fmi2Terminate"))) << r.err;
+}
+
 TEST_F(cosim_fmu_test, cli_run_error_is_one_line_and_non_zero) {
   const fs::path out = scratch.path() / "cli-fail";
   const auto r =

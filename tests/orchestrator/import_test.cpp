@@ -159,6 +159,46 @@ TEST_F(cosim_import, extracts_a_safe_archive) {
   EXPECT_TRUE(fs::is_regular_file(dest / "top.txt"));
 }
 
+// Python's zipfile.writestr and other tools write permission bits without a file type
+TEST_F(cosim_import, entries_with_permissions_but_no_file_type_are_files) {
+  const fs::path fmu_file = root.path() / "typeless.zip";
+  write_zip(fmu_file, {{"a/b.txt", "hello", false, 0600}, {"c.txt", "", false, 0644}});
+  const fs::path dest = root.path() / "dest";
+  fs::create_directories(dest);
+  extract_archive(fmu_file, dest);
+  std::ifstream in(dest / "a/b.txt");
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "hello");
+  EXPECT_TRUE(fs::is_regular_file(dest / "c.txt"));
+  // a type that is neither file, folder nor link is still refused
+  write_zip(fmu_file, {{"fifo", "", false, S_IFIFO | 0600}});
+  fs::remove_all(dest);
+  fs::create_directories(dest);
+  try {
+    extract_archive(fmu_file, dest);
+    ADD_FAILURE() << "a FIFO entry was extracted";
+  } catch (const std::exception& e) {
+    EXPECT_THAT(e.what(), HasSubstr("entry \"fifo\" is not a regular file or directory"));
+  }
+}
+
+// the identifier names the binary: a path would make the importer load code from elsewhere
+TEST_F(cosim_import, a_model_identifier_that_is_not_an_identifier_is_refused) {
+  for (const std::string id : {"../../../tmp/evil", "/tmp/evil", "a b", "9lives"}) {
+    std::string md = k_model_description;
+    md.replace(md.find("modelIdentifier=\"demo\""), 22, "modelIdentifier=\"" + id + "\"");
+    const fs::path fmu_file = root.path() / "id.fmu";
+    write_zip(fmu_file, {{"modelDescription.xml", md}});
+    EXPECT_EQ(load_error(fmu_file, options()),
+              fmu_file.string() + ": modelIdentifier \"" + id +
+                  "\" is not a C identifier (FMI 2.0 requires one: it names the binary and "
+                  "prefixes its functions)")
+        << id;
+    EXPECT_TRUE(extract_root_is_empty());
+  }
+}
+
 TEST_F(cosim_import, missing_binary_is_named) {
   const fs::path fmu_file = root.path() / "nobin.fmu";
   write_zip(fmu_file,

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <zip.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -16,7 +17,8 @@ namespace stride::cosim::test {
 struct zip_entry {
   std::string name;
   std::string content;
-  bool symlink = false;  ///< content is the link target
+  bool symlink = false;    ///< content is the link target
+  std::uint32_t mode = 0;  ///< when not 0: the Unix mode written into the external attributes
 };
 
 inline void write_zip(const std::filesystem::path& file, const std::vector<zip_entry>& entries) {
@@ -35,9 +37,10 @@ inline void write_zip(const std::filesystem::path& file, const std::vector<zip_e
       zip_discard(za);
       throw std::runtime_error("cannot add " + e.name);
     }
-    if (e.symlink) {
+    const std::uint32_t mode = e.symlink ? (S_IFLNK | 0777) : e.mode;
+    if (mode != 0) {
       zip_file_set_external_attributes(za, static_cast<zip_uint64_t>(index), 0, ZIP_OPSYS_UNIX,
-                                       static_cast<zip_uint32_t>(S_IFLNK | 0777) << 16);
+                                       static_cast<zip_uint32_t>(mode) << 16);
     }
   }
   if (zip_close(za) != 0) {
