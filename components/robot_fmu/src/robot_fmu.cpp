@@ -23,6 +23,7 @@ namespace stride::robot {
 namespace {
 
 constexpr int k_servos = darwin::k_servo_count;
+constexpr double k_max_push = 1e4;  // N
 
 // The plant's numeric parameters, ONE list: FMU variable, where it lives in robot_config, how it
 // is declared. The start values and the profile defaults come from robot_config itself.
@@ -139,8 +140,18 @@ class robot_model_fmu : public sdk::model_base<robot_data> {
     t.add("reset", &robot_data::reset)
         .input()
         .describe("Any change puts the robot back standing in the walk-ready pose at the origin");
-    t.add("push_x", &robot_data::push_x).input().unit("N").describe("Push on the torso, world x");
-    t.add("push_y", &robot_data::push_y).input().unit("N").describe("Push on the torso, world y");
+    // a bound far beyond any push the plant is meant for (10 kN on a 2.9 kg robot): forces of
+    // about 1e154 N and more overflow inside ODE, which then aborts the process
+    t.add("push_x", &robot_data::push_x)
+        .input()
+        .unit("N")
+        .range(-k_max_push, k_max_push)
+        .describe("Push on the torso, world x");
+    t.add("push_y", &robot_data::push_y)
+        .input()
+        .unit("N")
+        .range(-k_max_push, k_max_push)
+        .describe("Push on the torso, world y");
 
     t.add("profile", &robot_data::profile)
         .parameter()

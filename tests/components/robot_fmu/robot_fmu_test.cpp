@@ -67,6 +67,19 @@ TEST(robot_fmu, a_push_topples_it_and_reset_stands_it_up) {
   EXPECT_NEAR(f.real(c, "base_x"), 0.0, 0.01);
 }
 
+// forces of about 1e154 N overflow inside ODE, which aborts the process: refused at the set
+TEST(robot_fmu, a_push_beyond_its_declared_range_is_an_error_not_a_crash) {
+  raw_fmu f(robot_fmu_path());
+  fmi2Component c = f.instantiate();
+  f.initialize(c);
+  double t = 0;
+  run(f, c, t, 0.1);
+  ASSERT_EQ(f.set_real(c, "push_x", 1e4), fmi2OK);  // the bound itself is allowed
+  ASSERT_EQ(f.set_real(c, "push_x", 0.0), fmi2OK);
+  EXPECT_EQ(f.set_real(c, "push_x", 1e154), fmi2Error);
+  EXPECT_EQ(f.set_real(c, "push_y", -1e5), fmi2Error);
+}
+
 TEST(robot_fmu, fmu_state_restores_the_continuation_bit_exactly) {
   raw_fmu f(robot_fmu_path());
   fmi2Component c = f.instantiate();
