@@ -2,6 +2,7 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <initializer_list>
@@ -163,6 +164,16 @@ class system_reader {
     s.where = {file_, 0};
     s.base_dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
     s.name = attribute(root, "name").value_or(path.stem().string());
+    // the name becomes a folder name (the default output folder): it must stay one
+    const bool control = std::any_of(s.name.begin(), s.name.end(), [](char c) {
+      return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+    });
+    if (s.name.empty() || s.name == "." || s.name == ".." ||
+        s.name.find_first_of("/\\") != std::string::npos || control) {
+      fail(root->GetLineNum(), "system name \"" + s.name +
+                                   "\" must be a folder name: not empty, '.' or '..', and "
+                                   "without '/', '\\' or control characters");
+    }
     s.description = attribute(root, "description").value_or("");
     if (const auto v = attribute(root, "version"); v && *v != "1") {
       fail(root->GetLineNum(), "unsupported system format version \"" + *v + "\" (expected 1)");

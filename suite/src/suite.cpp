@@ -68,6 +68,7 @@ class reader {
     suite_spec s;
     s.file = file_;
     s.name = root->Attribute("name") ? root->Attribute("name") : file_.stem().string();
+    check_folder_name(root->GetLineNum(), "suite", s.name);
     std::set<std::string> names;
     for (auto* e = root->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
       if (std::string_view(e->Name()) != "case") {
@@ -102,19 +103,24 @@ class reader {
     return std::string(v);
   }
 
+  // names that become folder names (the cases' runs, the default output folder)
+  void check_folder_name(int line, const char* what, const std::string& name) const {
+    if (name.empty() ||
+        name.find_first_not_of(
+            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") !=
+            std::string::npos ||
+        name.front() == '.') {
+      fail(line, std::string(what) + " name \"" + name +
+                     "\" may hold only letters, digits, '_', '-' and '.' (it names a folder)");
+    }
+  }
+
   case_spec read_case(const tinyxml2::XMLElement* e) const {
     only(e, {"name", "system", "stop", "interval"});
     case_spec c;
     c.where = at(e);
     c.name = required(e, "name");
-    if (c.name.find_first_not_of(
-            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") !=
-            std::string::npos ||
-        c.name.front() == '.') {
-      fail(e->GetLineNum(), "case name \"" + c.name +
-                                "\" may hold only letters, digits, '_', '-' and '.' (it names a "
-                                "folder)");
-    }
+    check_folder_name(e->GetLineNum(), "case", c.name);
     c.system = file_.parent_path() / required(e, "system");
     c.stop_time = seconds(e, "stop", false);
     c.record_interval = seconds(e, "interval", true);

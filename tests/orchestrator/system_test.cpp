@@ -133,6 +133,14 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   };
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m' colour='red'/>\n</system>"),
             "t/test.xml:2: unknown attribute 'colour' on <component>");
+  // the name becomes the default output folder's name
+  for (const std::string name : {"../../escape", "/tmp/x", "a\\b", "..", ""}) {
+    EXPECT_EQ(error_of("<system name='" + name + "'>\n<component name='a' fmu='m'/>\n</system>"),
+              "t/test.xml:1: system name \"" + name +
+                  "\" must be a folder name: not empty, '.' or '..', and without '/', '\\' or "
+                  "control characters")
+        << name;
+  }
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<wire/>\n</system>"),
             "t/test.xml:3: unknown element <wire> (expected simulation, component, connection, "
             "replicate or record)");

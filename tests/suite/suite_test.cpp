@@ -195,6 +195,17 @@ TEST(suite_parser, case_names_must_be_folder_names) {
             "");
 }
 
+// the suite's name becomes the default output folder's name
+TEST(suite_parser, suite_names_must_be_folder_names) {
+  for (const char* bad : {"../../escape", "/tmp/x", ".."}) {
+    EXPECT_THAT(parse_error(std::string("<suite name='") + bad +
+                            "'>\n  <case name='a' system='x.xml'><never signal='a.b'/></case>\n"
+                            "</suite>"),
+                StartsWith(at_line(1) + "suite name \"" + bad + "\""))
+        << bad;
+  }
+}
+
 TEST(suite_parser, stop_and_interval_must_be_times) {
   const auto with = [](const std::string& attributes) {
     return parse_error("<suite>\n<case name='c' system='x.xml' " + attributes +
