@@ -1,9 +1,11 @@
 #include "commands.hpp"
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
+#include "stop_signals.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/fmu.hpp"
@@ -109,6 +111,7 @@ int run(const run_arguments& args, const run_extension& extension) {
   // joins the DDS domain only when a component has a worker
   options.build.placements.push_back(std::make_shared<remote::remote_placement>(args.dds, limits));
   options.record_signals = args.signals;
+  options.interrupt = &catch_stop_signals();
   if (args.record_interval) {
     try {
       options.record_interval = parse_duration(*args.record_interval);
@@ -142,6 +145,16 @@ int run(const run_arguments& args, const run_extension& extension) {
     if (!args.quiet) std::printf("reference: %s\n", args.save_reference.string().c_str());
   }
   if (extension.report) extension.report(report, args);
+  if (report.result.interrupted) {
+    const int signal = caught_stop_signal();
+    std::fprintf(stderr,
+                 "stride: interrupted by %s at t = %s s after %lld steps; what was recorded is "
+                 "in %s\n",
+                 signal == SIGTERM ? "SIGTERM" : "SIGINT",
+                 format_seconds(report.result.end_time).c_str(),
+                 static_cast<long long>(report.result.steps), report.output_dir.string().c_str());
+    return 128 + (signal == SIGTERM ? SIGTERM : SIGINT);
+  }
   if (!args.quiet) {
     std::printf(
         "%s at t = %s s after %lld steps (%.2f s wall, real-time factor %.2f)\n",

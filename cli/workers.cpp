@@ -1,21 +1,11 @@
 #include "workers.hpp"
 
-#include <csignal>
 #include <cstdio>
 
+#include "stop_signals.hpp"
 #include "stride/remote/worker.hpp"
 
 namespace stride::cli {
-
-namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void request_stop(int) {
-  g_stop.store(true);
-}
-
-}  // namespace
 
 void add_dds_options(CLI::App& command, remote::dds_settings& dds) {
   command.add_option("--domain", dds.domain, "DDS domain of the run and its workers")
@@ -48,16 +38,12 @@ CLI::App* add_workers_command(CLI::App& app, workers_arguments& args) {
 }
 
 int worker(const worker_arguments& args) {
-  struct sigaction sa {};
-  sa.sa_handler = request_stop;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  const std::atomic<bool>& stop = catch_stop_signals();
   remote::worker_options o;
   o.name = args.name;
   o.dds = args.dds;
   o.log = stdout;
-  remote::serve(o, g_stop);
+  remote::serve(o, stop);
   std::printf("worker stopped\n");
   return 0;
 }

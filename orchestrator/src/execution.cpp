@@ -265,13 +265,17 @@ void execution::end() noexcept {
   if (initialized_) finish(now_, {});
 }
 
-run_result execution::simulate_until(time_point stop) {
+run_result execution::simulate_until(time_point stop, const std::atomic<bool>* interrupt) {
   if (finished_) throw validation_error("the simulation has already ended");
   if (!initialized_) initialize(stop);
   run_result result;
   const duration h = algo_->base_step();
   try {
     while (now_ + h <= stop) {
+      if (interrupt != nullptr && interrupt->load(std::memory_order_relaxed)) {
+        result.interrupted = true;
+        break;
+      }
       const step_outcome outcome = step();
       if (outcome.terminated) {
         result.terminated_by_component = true;

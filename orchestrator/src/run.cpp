@@ -90,7 +90,11 @@ std::string manifest_json(const manifest_data& m) {
   std::ostringstream j;
   j << "{\n";
   j << "  \"stride_version\": " << json_string(version()) << ",\n";
-  j << "  \"status\": " << json_string(r.error.empty() ? "ok" : "error") << ",\n";
+  j << "  \"status\": "
+    << json_string(!r.error.empty()       ? "error"
+                   : r.result.interrupted ? "interrupted"
+                                          : "ok")
+    << ",\n";
   if (!r.error.empty()) j << "  \"error\": " << json_string(r.error) << ",\n";
   j << "  \"system\": " << json_string(s.name) << ",\n";
   j << "  \"system_file\": " << json_string(s.where.file) << ",\n";
@@ -107,7 +111,9 @@ std::string manifest_json(const manifest_data& m) {
   j << "  \"ended_by\": "
     << json_string(r.result.terminated_by_component
                        ? "component " + r.result.terminated_by + " requested termination"
-                       : (r.error.empty() ? "stop time" : "error"))
+                   : !r.error.empty()     ? "error"
+                   : r.result.interrupted ? "interrupted"
+                                          : "stop time")
     << ",\n";
   j << "  \"wall_time_s\": " << json_number(r.wall_seconds) << ",\n";
   j << "  \"real_time_factor\": " << json_number(r.real_time_factor) << ",\n";
@@ -267,7 +273,7 @@ run_report run_system(system_structure system, const run_options& options) {
     report.real_time_factor = report.wall_seconds > 0 ? simulated / report.wall_seconds : 0.0;
   };
   try {
-    report.result = ex.simulate_until(built.stop);
+    report.result = ex.simulate_until(built.stop, options.interrupt);
     ex.end();
   } catch (const std::exception& e) {
     report.error = e.what();

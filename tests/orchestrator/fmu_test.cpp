@@ -5,9 +5,13 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "process.hpp"
 #include "stride/cosim/archive.hpp"
@@ -353,6 +357,51 @@ TEST_F(cosim_fmu_test, an_initialization_failure_terminates_no_instance_in_initi
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("component 'b': fmi2SetString returned fmi2Error (initialization"));
   EXPECT_THAT(r.err, ::testing::Not(HasSubstr("fmi2Terminate"))) << r.err;
+}
+
+// SIGINT or SIGTERM end the run between two steps: whole rows, a manifest that says so, the
+// signal's exit status; the unpacked FMUs are removed
+TEST_F(cosim_fmu_test, a_run_stopped_by_a_signal_keeps_its_results_and_says_so) {
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const fs::path out = scratch.path() / ("signal-" + std::to_string(signal));
+    const pid_t pid =
+        test::spawn({k_cli, "run", (k_data / "stride_test_pair.xml").string(), "--stop-time",
+                     "1000000", "--record-interval", "1", "--quiet", "--output", out.string()},
+                    scratch.path() / "run.log");
+    ASSERT_GT(pid, 0);
+    // wait until it is stepping and recording
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!(fs::exists(out / "results.csv") && fs::file_size(out / "results.csv") > 2000) &&
+           std::chrono::steady_clock::now() < until) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ::kill(pid, signal);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+    EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+    std::ifstream log(scratch.path() / "run.log");
+    std::stringstream text;
+    text << log.rdbuf();
+    EXPECT_THAT(text.str(), HasSubstr(signal == SIGINT ? "stride: interrupted by SIGINT at t = "
+                                                       : "stride: interrupted by SIGTERM at t = "));
+    std::ifstream manifest(out / "manifest.json");
+    std::stringstream m;
+    m << manifest.rdbuf();
+    EXPECT_THAT(m.str(), HasSubstr("\"status\": \"interrupted\""));
+    EXPECT_THAT(m.str(), HasSubstr("\"ended_by\": \"interrupted\""));
+    // every row whole: as many fields as the header
+    std::ifstream csv(out / "results.csv");
+    std::string line;
+    std::getline(csv, line);
+    const auto fields = std::count(line.begin(), line.end(), ',');
+    int rows = 0;
+    while (std::getline(csv, line)) {
+      EXPECT_EQ(std::count(line.begin(), line.end(), ','), fields) << line;
+      ++rows;
+    }
+    EXPECT_GT(rows, 3);
+  }
 }
 
 TEST_F(cosim_fmu_test, cli_run_error_is_one_line_and_non_zero) {

@@ -1,14 +1,21 @@
-// Runs a command line for the CLI tests and collects exit code, stdout and stderr.
+// Runs a command line for the CLI tests and collects exit code, stdout and stderr; starts a
+// process in the background.
 #ifndef STRIDE_TESTS_ORCHESTRATOR_PROCESS_HPP
 #define STRIDE_TESTS_ORCHESTRATOR_PROCESS_HPP
 
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+extern char** environ;
 
 namespace stride::cosim::test {
 
@@ -35,6 +42,22 @@ inline process_result run_command(const std::string& command,
   text << in.rdbuf();
   r.err = text.str();
   return r;
+}
+
+/// Starts `args` with stdout and stderr into `log`; 0 if it cannot be started.
+inline pid_t spawn(std::vector<std::string> args, const std::filesystem::path& log) {
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = 0;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
 }
 
 inline std::string quoted(const std::filesystem::path& p) {

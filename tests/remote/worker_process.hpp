@@ -3,9 +3,7 @@
 #ifndef STRIDE_TESTS_REMOTE_WORKER_PROCESS_HPP
 #define STRIDE_TESTS_REMOTE_WORKER_PROCESS_HPP
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,25 +15,11 @@
 #include <thread>
 #include <vector>
 
-extern char** environ;
+#include "../orchestrator/process.hpp"
 
 namespace stride::remote::test {
 
-/// Starts `args` with stdout and stderr into `log`; 0 if it cannot be started.
-inline pid_t spawn(std::vector<std::string> args, const std::filesystem::path& log) {
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = 0;
-  posix_spawn_file_actions_destroy(&actions);
-  return pid;
-}
+using cosim::test::spawn;
 
 class worker_process {
  public:

@@ -9,6 +9,7 @@
 #define STRIDE_COSIM_EXECUTION_HPP
 
 #include <any>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -58,6 +59,7 @@ struct run_result {
   std::int64_t steps = 0;
   bool terminated_by_component = false;
   std::string terminated_by;  ///< component name when terminated_by_component
+  bool interrupted = false;   ///< ended early because the interrupt flag was set
 };
 
 /// The complete state of an initialized execution: every component's FMU state and what the
@@ -113,7 +115,9 @@ class execution {
   /// requests termination. Initializes first if needed; may be called again with a later stop.
   /// On an error or a termination request the execution ends: observers are told (recorders
   /// flush), components are terminated, and an error is rethrown.
-  run_result simulate_until(time_point stop);
+  /// `interrupt`, when given, is checked between steps: once set, the run ends there as at the
+  /// stop time (set from a signal handler, for instance).
+  run_result simulate_until(time_point stop, const std::atomic<bool>* interrupt = nullptr);
   /// Saves the whole system between two steps (components through their save_state).
   /// \throws component_error when a component cannot save its state.
   execution_state save_state() const;

@@ -3,6 +3,7 @@
 #ifndef STRIDE_COSIM_RUN_HPP
 #define STRIDE_COSIM_RUN_HPP
 
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -34,6 +35,9 @@ struct run_options {
   std::vector<std::string> record_signals;
   /// ... and this interval (a multiple of the base step).
   std::optional<duration> record_interval;
+  /// Checked between steps: once set, the run ends there, with what was recorded written and a
+  /// manifest that says "interrupted" (e.g. set by SIGINT).
+  const std::atomic<bool>* interrupt = nullptr;
 };
 
 /// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder
