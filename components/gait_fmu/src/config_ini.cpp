@@ -8,7 +8,11 @@
 #include "text_util.hpp"
 
 namespace stride::gait {
+
 namespace {
+
+// the framework's config.ini is a few kB; a file a thousand times larger is a mistake
+constexpr std::size_t k_max_ini_bytes = 4 * 1024 * 1024;
 
 using detail::iequals;
 using detail::trim;
@@ -135,9 +139,22 @@ ini_document ini_document::parse(std::string_view text, std::string source) {
 }
 
 ini_document ini_document::load(const std::filesystem::path& file) {
+  // a device or a pipe (/dev/zero) would be read until memory runs out
+  std::error_code ec;
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec)) {
+    throw config_error(file.string() + ": not a regular file");
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw config_error(file.string() + ": cannot open file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  char buffer[4096];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > k_max_ini_bytes) {
+      throw config_error(file.string() + ": larger than " + std::to_string(k_max_ini_bytes) +
+                         " bytes: not a config.ini");
+    }
+  }
   if (in.bad()) throw config_error(file.string() + ": read error");
   return parse(text, file.string());
 }

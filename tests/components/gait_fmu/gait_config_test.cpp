@@ -109,6 +109,24 @@ TEST_F(gait_config, legacy_keys_are_ignored_with_a_warning_naming_file_and_line)
   EXPECT_NO_THROW(read_walking_config(gait_test::data_path("legacy_r1.ini"), {}, nullptr));
 }
 
+// a device would be read until memory runs out, a huge file nearly so
+TEST_F(gait_config, devices_and_huge_files_are_refused_with_the_file_named) {
+  try {
+    ini_document::load("/dev/zero");
+    ADD_FAILURE() << "/dev/zero was read";
+  } catch (const config_error& e) {
+    EXPECT_STREQ(e.what(), "/dev/zero: not a regular file");
+  }
+  const fs::path big = write("big.ini", std::string(5 * 1024 * 1024, ';'));
+  try {
+    ini_document::load(big);
+    ADD_FAILURE() << "a 5 MB file was read";
+  } catch (const config_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              big.string() + ": larger than 4194304 bytes: not a config.ini");
+  }
+}
+
 TEST_F(gait_config, round_trip_keeps_unknown_keys_comments_and_order) {
   const std::string original = slurp(gait_test::data_path("tuned.ini"));
   const fs::path file = write("tuned.ini", original);
