@@ -418,6 +418,13 @@ std::vector<fs::path> write_figures(const fs::path& dir) {
                              ": no learner artefacts (v_table.csv or evaluation.csv) here or in "
                              "the folders below");
   }
+  if (written.empty()) {
+    std::error_code ec;
+    fs::remove(figures, ec);  // only if empty: figures of an earlier call stay
+    throw std::runtime_error(dir.string() +
+                             ": no figure could be drawn: the learner files here do not hold the "
+                             "columns expected (docs/learner.md, \"Artefacts\")");
+  }
   return written;
 }
 

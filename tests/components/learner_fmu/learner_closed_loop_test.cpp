@@ -191,5 +191,15 @@ TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
   EXPECT_THAT(empty.err, HasSubstr("no learner artefacts"));
 }
 
+TEST_F(learner_resume, plot_of_unreadable_learner_files_is_an_error_and_leaves_no_empty_folder) {
+  const fs::path run = scratch.path() / "garbage";
+  fs::create_directories(run);
+  std::ofstream(run / "v_table.csv") << "garbage,,,\n1,2\n";
+  const auto r = stride("plot " + test::quoted(run));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("no figure could be drawn"));
+  EXPECT_FALSE(fs::exists(run / "figures"));
+}
+
 }  // namespace
 }  // namespace stride::cosim
