@@ -292,6 +292,16 @@ int validate(const validate_arguments& args) {
     system_structure local = system;
     for (auto& c : local.components) c.worker.clear();
     const built_system built = build_system(local, options);
+    // and everything a run checks before its first step: records, start values, initialization
+    {
+      temp_dir scratch("stride-validate-");
+      run_options dry;
+      dry.output_dir = scratch.path() / "run";
+      dry.progress = false;
+      dry.build.log = stderr_log_sink(log_level::warning);  // the run of no steps says nothing
+      dry.initialize_only = true;
+      run_system(local, dry);
+    }
     if (!args.quiet) {
       const execution& ex = *built.execution;
       std::string order;

@@ -272,6 +272,11 @@ run_report run_system(system_structure system, const run_options& options) {
     const double simulated = to_seconds(report.result.end_time - system.start);
     report.real_time_factor = report.wall_seconds > 0 ? simulated / report.wall_seconds : 0.0;
   };
+  if (options.initialize_only) {
+    ex.initialize(built.stop);
+    ex.end();
+    return report;
+  }
   try {
     report.result = ex.simulate_until(built.stop, options.interrupt);
     ex.end();

@@ -404,6 +404,25 @@ TEST_F(cosim_fmu_test, a_run_stopped_by_a_signal_keeps_its_results_and_says_so) 
   }
 }
 
+// validate checks what run checks before its first step
+TEST_F(cosim_fmu_test, validate_refuses_what_run_would_refuse_before_stepping) {
+  auto r = test::run_command("'" + k_cli + "' validate " + quoted(k_data / "stride_test_pair.xml") +
+                                 " --set b.stop_after_steps=-1",
+                             scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("'stop_after_steps': value -1 is outside [0, inf]"));
+  const fs::path system = scratch.path() / "record.xml";
+  std::ofstream(system) << "<system name='r'>\n<simulation stop='1' step='0.01'/>\n"
+                           "<component name='a' fmu='stride_test'/>\n"
+                           "<record><signal name='a.nothing'/></record>\n</system>\n";
+  r = test::run_command("'" + k_cli + "' validate " + quoted(system), scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("record.xml:4: record signal 'a.nothing' matches no variable"));
+  r = test::run_command("'" + k_cli + "' validate " + quoted(k_data / "stride_test_pair.xml"),
+                        scratch.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 TEST_F(cosim_fmu_test, cli_run_error_is_one_line_and_non_zero) {
   const fs::path out = scratch.path() / "cli-fail";
   const auto r =

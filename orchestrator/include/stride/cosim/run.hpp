@@ -38,6 +38,9 @@ struct run_options {
   /// Checked between steps: once set, the run ends there, with what was recorded written and a
   /// manifest that says "interrupted" (e.g. set by SIGINT).
   const std::atomic<bool>* interrupt = nullptr;
+  /// Build, check and initialize everything as for the run, then end before the first step
+  /// (`stride validate`): no manifest is written.
+  bool initialize_only = false;
 };
 
 /// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder
