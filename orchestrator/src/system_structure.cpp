@@ -347,6 +347,11 @@ class system_reader {
 }  // namespace
 
 system_structure parse_system_text(std::string_view xml, const fs::path& file) {
+  // names and values go on into result files (manifest.json, system.xml): text only
+  if (const int line = detail::first_line_not_utf8(xml); line > 0) {
+    throw validation_error(file.string() + ":" + std::to_string(line) +
+                           ": not UTF-8 text (XML's encoding); save the file as UTF-8");
+  }
   tinyxml2::XMLDocument doc;
   doc.Parse(xml.data(), xml.size());
   return system_reader(file.string()).read(doc, file);

@@ -10,6 +10,42 @@
 
 namespace stride::cosim::detail {
 
+/// The 1-based line of the first byte of `text` that is not part of well-formed UTF-8 (XML's
+/// default encoding), or 0 when all of it is. Overlong forms, surrogates and code points above
+/// U+10FFFF are not well formed.
+inline int first_line_not_utf8(std::string_view text) {
+  int line = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    if (b < 0x80) {
+      if (b == '\n') ++line;
+      ++i;
+      continue;
+    }
+    std::size_t n = 0;
+    unsigned min = 0;
+    unsigned cp = 0;
+    if ((b & 0xE0) == 0xC0) {
+      n = 1, min = 0x80, cp = b & 0x1F;
+    } else if ((b & 0xF0) == 0xE0) {
+      n = 2, min = 0x800, cp = b & 0x0F;
+    } else if ((b & 0xF8) == 0xF0) {
+      n = 3, min = 0x10000, cp = b & 0x07;
+    } else {
+      return line;
+    }
+    for (std::size_t k = 1; k <= n; ++k) {
+      if (i + k >= text.size()) return line;
+      const auto c = static_cast<unsigned char>(text[i + k]);
+      if ((c & 0xC0) != 0x80) return line;
+      cp = (cp << 6) | (c & 0x3F);
+    }
+    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return line;
+    i += n + 1;
+  }
+  return 0;
+}
+
 /// The attribute's text, or nullopt.
 inline std::optional<std::string> attribute(const tinyxml2::XMLElement* e, const char* name) {
   const char* v = e->Attribute(name);

@@ -133,6 +133,15 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   };
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m' colour='red'/>\n</system>"),
             "t/test.xml:2: unknown attribute 'colour' on <component>");
+  // names and values go into result files: UTF-8 only, the line of the first bad byte named
+  EXPECT_EQ(error_of("<system>\n<component name='a\xff' fmu='m'/>\n</system>"),
+            "t/test.xml:2: not UTF-8 text (XML's encoding); save the file as UTF-8");
+  EXPECT_EQ(error_of("<system>\n\n<component name='\xc0\xaf' fmu='m'/>\n</system>"),  // overlong
+            "t/test.xml:3: not UTF-8 text (XML's encoding); save the file as UTF-8");
+  EXPECT_EQ(error_of("<system name='gr\xc3\xbc\xc3\x9f'>\n<component name='a' fmu='m'/>\n"
+                     "<simulation stop='1' step='1'/>\n</system>")
+                .find("not UTF-8"),
+            std::string::npos);  // ü and ß are fine
   // the name becomes the default output folder's name
   for (const std::string name : {"../../escape", "/tmp/x", "a\\b", "..", ""}) {
     EXPECT_EQ(error_of("<system name='" + name + "'>\n<component name='a' fmu='m'/>\n</system>"),
