@@ -327,6 +327,11 @@ class system_reader {
         fail(e->GetLineNum(),
              "file=\"" + *f + "\" must be a relative path inside the output folder");
       }
+      const fs::path normal = p.lexically_normal();
+      if (normal == "manifest.json" || normal == "system.xml") {
+        fail(e->GetLineNum(),
+             "file=\"" + *f + "\" is a file the run writes itself (manifest.json, system.xml)");
+      }
       r.file = *f;
     }
     for (auto* sig = e->FirstChildElement(); sig != nullptr; sig = sig->NextSiblingElement()) {

@@ -142,6 +142,13 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
                      "<simulation stop='1' step='1'/>\n</system>")
                 .find("not UTF-8"),
             std::string::npos);  // ü and ß are fine
+  // the run's own files are not a record file
+  for (const std::string file : {"manifest.json", "./system.xml"}) {
+    EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<record file='" + file +
+                       "'/>\n</system>"),
+              "t/test.xml:3: file=\"" + file +
+                  "\" is a file the run writes itself (manifest.json, system.xml)");
+  }
   // the name becomes the default output folder's name
   for (const std::string name : {"../../escape", "/tmp/x", "a\\b", "..", ""}) {
     EXPECT_EQ(error_of("<system name='" + name + "'>\n<component name='a' fmu='m'/>\n</system>"),
