@@ -1,5 +1,7 @@
 #include "stride/suite/runner.hpp"
 
+#include <tinyxml2.h>
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -246,69 +248,61 @@ std::string format_summary(const suite_report& report) {
 
 namespace {
 
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') {
-          out += ' ';
-        } else {
-          out += c;
-        }
-    }
+// XML 1.0 has no place for most control characters; tinyxml2 escapes the rest
+std::string xml_text(std::string s) {
+  for (char& c : s) {
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') c = ' ';
   }
-  return out;
+  return s;
+}
+
+// the counts and time JUnit readers expect on <testsuites> and <testsuite>
+void set_totals(tinyxml2::XMLElement* e, const std::string& name, const suite_report& report) {
+  e->SetAttribute("name", name.c_str());
+  e->SetAttribute("tests", static_cast<int64_t>(report.cases.size()));
+  e->SetAttribute("failures", static_cast<int64_t>(report.count(case_status::failed)));
+  e->SetAttribute("errors", static_cast<int64_t>(report.count(case_status::error)));
 }
 
 }  // namespace
 
 void write_junit(const fs::path& file, const suite_spec& suite, const suite_report& report) {
-  std::ostringstream x;
-  const std::string name = xml_escape(suite.name);
-  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x << "<testsuites name=\"" << name << "\" tests=\"" << report.cases.size() << "\" failures=\""
-    << report.count(case_status::failed) << "\" errors=\"" << report.count(case_status::error)
-    << "\" time=\"" << seconds(report.seconds) << "\">\n";
-  x << "  <testsuite name=\"" << name << "\" tests=\"" << report.cases.size() << "\" failures=\""
-    << report.count(case_status::failed) << "\" errors=\"" << report.count(case_status::error)
-    << "\" skipped=\"0\" time=\"" << seconds(report.seconds) << "\">\n";
+  const std::string name = xml_text(suite.name);
+  tinyxml2::XMLDocument doc;
+  doc.InsertEndChild(doc.NewDeclaration());
+  auto* root = doc.NewElement("testsuites");
+  doc.InsertEndChild(root);
+  set_totals(root, name, report);
+  root->SetAttribute("time", seconds(report.seconds).c_str());
+  auto* ts = root->InsertNewChildElement("testsuite");
+  set_totals(ts, name, report);
+  ts->SetAttribute("skipped", 0);
+  ts->SetAttribute("time", seconds(report.seconds).c_str());
   for (const auto& c : report.cases) {
-    x << "    <testcase name=\"" << xml_escape(c.name) << "\" classname=\"" << name << "\" time=\""
-      << seconds(c.seconds) << "\"";
-    if (c.status == case_status::passed) {
-      x << "/>\n";
-      continue;
-    }
-    x << ">\n";
+    auto* tc = ts->InsertNewChildElement("testcase");
+    tc->SetAttribute("name", xml_text(c.name).c_str());
+    tc->SetAttribute("classname", name.c_str());
+    tc->SetAttribute("time", seconds(c.seconds).c_str());
     if (c.status == case_status::failed) {
       std::string all;
       for (const auto& f : c.failures) all += f + "\n";
-      const std::string first = c.failures.empty() ? "failed" : c.failures.front();
-      x << "      <failure message=\"" << xml_escape(first) << "\" type=\"assertion\">"
-        << xml_escape(all) << "</failure>\n";
-    } else {
-      x << "      <error message=\"" << xml_escape(c.error) << "\" type=\"run\">"
-        << xml_escape(c.error) << "</error>\n";
+      auto* f = tc->InsertNewChildElement("failure");
+      f->SetAttribute("message",
+                      xml_text(c.failures.empty() ? "failed" : c.failures.front()).c_str());
+      f->SetAttribute("type", "assertion");
+      f->SetText(xml_text(all).c_str());
+    } else if (c.status == case_status::error) {
+      auto* e = tc->InsertNewChildElement("error");
+      e->SetAttribute("message", xml_text(c.error).c_str());
+      e->SetAttribute("type", "run");
+      e->SetText(xml_text(c.error).c_str());
     }
-    x << "    </testcase>\n";
   }
-  x << "  </testsuite>\n</testsuites>\n";
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
   std::ofstream out(file, std::ios::binary);
-  out << x.str();
+  out.write(printer.CStr(), printer.CStrSize() - 1);  // without the terminating NUL
   out.close();
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
