@@ -31,6 +31,7 @@ struct run_arguments {
   std::filesystem::path save_reference;  ///< --save-reference: a copy of the results CSV
   remote::dds_settings dds;              ///< where components with a worker are looked for
   double worker_timeout = 10;            ///< seconds to wait for a worker to appear
+  int agents = 0;                        ///< --agents: replaces the <agents> count (0: keep)
 };
 
 struct validate_arguments {

@@ -12,6 +12,7 @@
 #include "stride/study/run_hooks.hpp"
 #include "stride/study/suite_assertions.hpp"
 #include "stride/suite/assertions.hpp"
+#include "sweep.hpp"
 #include "workers.hpp"
 
 int main(int argc, char** argv) {
@@ -55,6 +56,10 @@ int main(int argc, char** argv) {
                   "Also write the results CSV to this file: a reference for `stride test`");
   run->add_flag("--no-plots", run_args.no_plots,
                 "Do not write figures after a learner run (see `stride plot`)");
+  run->add_option("--agents", run_args.agents,
+                  "Run this many agents of the system at once, sharing ${shared_table} "
+                  "(replaces the count of <agents>; docs/swarm.md)")
+      ->check(CLI::Range(1, 1024));
   stride::cli::add_dds_options(*run, run_args.dds);
   run->add_option("--worker-timeout", run_args.worker_timeout,
                   "Seconds to wait for a worker named in the system to appear")
@@ -115,6 +120,8 @@ int main(int argc, char** argv) {
 
   stride::cli::calibrate_arguments calibrate_args;
   auto* calibrate = stride::cli::add_calibrate_command(app, calibrate_args);
+
+  stride::cli::add_sweep_command(app, stride::cli::study_sweep_extension());  // runs itself
 
   CLI11_PARSE(app, argc, argv);
 

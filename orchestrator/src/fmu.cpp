@@ -3,10 +3,12 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
+#include <mutex>
 #include <vector>
 
 #include "stride/cosim/error.hpp"
@@ -56,15 +58,21 @@ class fmu::impl {
   stride::cosim::model_description md;
   void* library = nullptr;
   fmi2_functions fn;
-  int instances = 0;
+  std::atomic<int> instances{0};  // runs on several threads may share one import
 
   explicit impl(temp_dir d) : dir(std::move(d)) {}
-  ~impl() {
-    if (library != nullptr) ::dlclose(library);
-  }
+  ~impl();
 };
 
 namespace {
+
+// Loading and unloading FMU binaries one at a time in the process: a binary's static
+// constructors and destructors (e.g. a physics library's process-wide set-up and tear-down,
+// reference counted without atomics) then never run concurrently with another's.
+std::mutex& library_mutex() {
+  static std::mutex m;
+  return m;
+}
 
 // One instance of an FMU.
 class fmu_component final : public component {
@@ -312,6 +320,12 @@ std::string fmu::resource_uri() const {
   return file_uri(pimpl_->dir.path() / "resources") + "/";
 }
 
+fmu::impl::~impl() {
+  if (library == nullptr) return;
+  const std::lock_guard lock(library_mutex());
+  ::dlclose(library);
+}
+
 std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& options) {
   const std::string where = file.string();
   if (!fs::is_regular_file(file)) throw fmu_import_error(where + ": FMU file not found");
@@ -354,7 +368,10 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
     throw fmu_import_error(where + ": missing binary binaries/linux64/" + id +
                            ".so (the FMU has no binary for this platform)");
   }
-  p->library = ::dlopen(binary.c_str(), RTLD_NOW | RTLD_LOCAL);
+  {
+    const std::lock_guard lock(library_mutex());
+    p->library = ::dlopen(binary.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
   if (p->library == nullptr) {
     const char* why = ::dlerror();
     throw fmu_import_error(where + ": cannot load binaries/linux64/" + id +

@@ -1,11 +1,41 @@
 #include "stride/cosim/placement.hpp"
 
+#include <map>
+#include <mutex>
+#include <string>
+
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/system_builder.hpp"
 
 namespace stride::cosim {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// One import per FMU file and process while any run uses it: concurrent runs (agents, sweeps)
+// then share one loaded binary, so process-wide state inside it (ODE's global initialisation in
+// the robot) is set up once, by its own thread-safe statics, instead of once per private copy.
+std::shared_ptr<fmu> shared_import(const fs::path& file, const fmu_import_options& options) {
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<fmu>> imported;
+  std::error_code ec;
+  const auto size = fs::file_size(file, ec);
+  const auto written = fs::last_write_time(file, ec).time_since_epoch().count();
+  // a changed file is imported afresh
+  const std::string key = fs::weakly_canonical(file).string() + '\n' + std::to_string(size) + '\n' +
+                          std::to_string(written) + '\n' + options.extract_root.string() + '\n' +
+                          std::to_string(options.limits.max_entry_size) + ',' +
+                          std::to_string(options.limits.max_total_size) + ',' +
+                          std::to_string(options.limits.max_entries);
+  std::lock_guard lock(mutex);
+  if (auto f = imported[key].lock()) return f;
+  auto f = fmu::load(file, options);
+  imported[key] = f;
+  return f;
+}
+
+}  // namespace
 
 std::unique_ptr<component> in_process_placement::create(const component_spec& spec,
                                                         const placement_context& context) {
@@ -14,7 +44,7 @@ std::unique_ptr<component> in_process_placement::create(const component_spec& sp
   const fs::path file = resolve_fmu(spec, *context.system, context.fmu_search_path);
   auto& f = imported_[fs::weakly_canonical(file)];
   try {
-    if (!f) f = fmu::load(file, context.import);
+    if (!f) f = shared_import(file, context.import);
     instance_options io;
     io.log = context.log;
     io.logging_on = context.fmu_debug_logging;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "run_files.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/observers.hpp"
 
@@ -21,60 +22,6 @@ std::string_view version() noexcept {
 }
 
 namespace {
-
-std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string json_number(double d) {
-  std::ostringstream s;
-  s.precision(6);
-  s << d;
-  return s.str();
-}
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
-
-void write_file(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw error("cannot write " + file.string());
-}
 
 struct manifest_data {
   const system_structure* system = nullptr;
@@ -161,8 +108,20 @@ fs::path default_output_dir(const system_structure& system) {
   return candidate;
 }
 
+std::string fresh_results_name(const fs::path& dir, const std::string& name) {
+  const fs::path first = name;
+  fs::path file = first;
+  for (int n = 1; fs::exists(dir / file); ++n) {
+    file =
+        first.parent_path() / (first.stem().string() + "-resumed" +
+                               (n > 1 ? "-" + std::to_string(n) : "") + first.extension().string());
+  }
+  return file.string();
+}
+
 std::size_t substitute_placeholders(system_structure& system, const fs::path& output_dir,
-                                    const fs::path& resume_dir) {
+                                    const fs::path& resume_dir,
+                                    const std::map<std::string, std::string>& more) {
   static constexpr std::string_view k_output = "${output_dir}", k_resume = "${resume}";
   std::size_t resume_uses = 0;
   for (auto& c : system.components) {
@@ -180,10 +139,20 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
           rest.remove_prefix(k_resume.size());
           ++resume_uses;
         } else {
-          const std::string where = p.where.str();
-          throw validation_error((where.empty() ? "" : where + ": ") + "parameter '" + c.name +
-                                 "." + p.variable + "': unknown placeholder in '" + p.value +
-                                 "' (known: ${output_dir}, ${resume})");
+          const auto close = rest.find('}');
+          const auto it = close == std::string_view::npos
+                              ? more.end()
+                              : more.find(std::string(rest.substr(2, close - 2)));
+          if (it == more.end()) {
+            std::string known = "${output_dir}, ${resume}";
+            for (const auto& [name, value] : more) known += ", ${" + name + "}";
+            const std::string where = p.where.str();
+            throw validation_error((where.empty() ? "" : where + ": ") + "parameter '" + c.name +
+                                   "." + p.variable + "': unknown placeholder in '" + p.value +
+                                   "' (known: " + known + ")");
+          }
+          out += it->second;
+          rest.remove_prefix(close + 1);
         }
       }
       out += rest;
@@ -194,6 +163,16 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
 }
 
 run_report run_system(system_structure system, const run_options& options) {
+  std::map<std::string, std::string> placeholders = options.placeholders;
+  const bool as_agent = placeholders.contains("agent");
+  placeholders.try_emplace("agent", "1");
+  placeholders.try_emplace("shared_table", "");
+  if (system.agents.count > 0 && !as_agent && !options.initialize_only) {
+    const std::string where = system.agents.where.str();
+    throw validation_error((where.empty() ? "" : where + ": ") + "system '" + system.name +
+                           "' has <agents>: run it with run_agents");
+  }
+  system.agents = {};
   for (const auto& o : options.overrides) apply_override(system, o);
   if (options.stop) system.stop = *options.stop;
   // the copies of replica groups get their own names and ${copy} values before the run's
@@ -213,9 +192,9 @@ run_report run_system(system_structure system, const run_options& options) {
         options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
   }
   // system.xml keeps the placeholders (as_written above), so it can be run (resumed) again
-  const std::size_t resume_uses =
-      substitute_placeholders(system, fs::absolute(report.output_dir),
-                              resuming ? fs::absolute(options.resume_dir) : fs::path());
+  const std::size_t resume_uses = substitute_placeholders(
+      system, fs::absolute(report.output_dir),
+      resuming ? fs::absolute(options.resume_dir) : fs::path(), placeholders);
   if (resuming && resume_uses == 0) {
     throw validation_error("--resume: no parameter of system '" + system.name +
                            "' uses ${resume}, so nothing would continue from " +

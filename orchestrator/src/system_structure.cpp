@@ -180,6 +180,7 @@ class system_reader {
     }
     bool seen_simulation = false;
     bool seen_record = false;
+    bool seen_agents = false;
     for (auto* e = root->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
       const std::string_view tag = e->Name();
       if (tag == "simulation") {
@@ -196,10 +197,14 @@ class system_reader {
         if (seen_record) fail(e->GetLineNum(), "more than one <record>");
         seen_record = true;
         read_record(e, s.record);
+      } else if (tag == "agents") {
+        if (seen_agents) fail(e->GetLineNum(), "more than one <agents>");
+        seen_agents = true;
+        read_agents(e, s.agents);
       } else {
         fail(e->GetLineNum(), "unknown element <" + std::string(tag) +
-                                  "> (expected simulation, component, connection, replicate or "
-                                  "record)");
+                                  "> (expected simulation, component, connection, replicate, "
+                                  "record or agents)");
       }
     }
     if (s.components.empty() && s.groups.empty()) {
@@ -225,6 +230,23 @@ class system_reader {
         fail(e->GetLineNum(), "algorithm \"" + *a + "\" is not gauss-seidel or jacobi");
       }
     }
+  }
+
+  void read_agents(const tinyxml2::XMLElement* e, agents_spec& a) const {
+    check_attributes(e, {"count", "mode", "workers"});
+    a.count = positive_integer(e, "count");
+    if (const auto w = attribute(e, "workers")) {
+      std::istringstream names(*w);
+      for (std::string name; names >> name;) a.workers.push_back(name);
+      if (a.workers.empty()) fail(e->GetLineNum(), "workers=\"\" names no worker");
+    }
+    if (const auto m = attribute(e, "mode")) {
+      if (*m != "synchronous" && *m != "asynchronous") {
+        fail(e->GetLineNum(), "mode \"" + *m + "\" is not synchronous or asynchronous");
+      }
+      a.synchronous = *m == "synchronous";
+    }
+    a.where = at(e);
   }
 
   connection_spec read_connection(const tinyxml2::XMLElement* e) const {
@@ -382,6 +404,16 @@ std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
   if (s.stop) sim->SetAttribute("stop", format_seconds(*s.stop).c_str());
   if (s.base_step) sim->SetAttribute("step", format_seconds(*s.base_step).c_str());
   sim->SetAttribute("algorithm", std::string(to_string(s.algorithm)).c_str());
+  if (s.agents.count > 0) {
+    auto* a = root->InsertNewChildElement("agents");
+    a->SetAttribute("count", s.agents.count);
+    a->SetAttribute("mode", s.agents.synchronous ? "synchronous" : "asynchronous");
+    if (!s.agents.workers.empty()) {
+      std::string names;
+      for (const auto& w : s.agents.workers) names += (names.empty() ? "" : " ") + w;
+      a->SetAttribute("workers", names.c_str());
+    }
+  }
   const auto write_component = [&](tinyxml2::XMLElement* parent, const component_spec& c) {
     auto* e = parent->InsertNewChildElement("component");
     e->SetAttribute("name", c.name.c_str());

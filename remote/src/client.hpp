@@ -84,7 +84,7 @@ class client {
   timeouts limits_;
   std::string run_;
   dds::entity participant_;
-  dds::topics topics_;
+  topics topics_;
   dds::entity announcements_;  // reader of worker_info
   dds::entity reply_subscriber_;
   dds::entity replies_;                                                 // reader

@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "stride_remote.h"
-
 namespace stride::remote::dds {
 
 namespace fs = std::filesystem;
@@ -49,8 +47,13 @@ entity make_participant(const dds_settings& settings) {
     if (it == g_domains.end()) {
       if (!config.empty()) {
         // the domain entity lives as long as the process: participants come and go on it
-        check(dds_create_domain(static_cast<dds_domainid_t>(settings.domain), config.c_str()),
-              "cannot set up DDS domain " + std::to_string(settings.domain));
+        const dds_entity_t domain =
+            dds_create_domain(static_cast<dds_domainid_t>(settings.domain), config.c_str());
+        // Already set up: by the process hosting this code (an FMU that links this layer and
+        // runs inside a stride process or worker); its configuration applies.
+        if (domain != DDS_RETCODE_PRECONDITION_NOT_MET) {
+          check(domain, "cannot set up DDS domain " + std::to_string(settings.domain));
+        }
       }
       g_domains[settings.domain] = config;
     } else if (it->second != config) {
@@ -61,22 +64,6 @@ entity make_participant(const dds_settings& settings) {
   return entity(
       check(dds_create_participant(static_cast<dds_domainid_t>(settings.domain), nullptr, nullptr),
             "cannot join DDS domain " + std::to_string(settings.domain)));
-}
-
-topics::topics(dds_entity_t participant) {
-  dds_qos_t* qos = reliable_qos();
-  request = entity(check(dds_create_topic(participant, &stride_remote_request_desc,
-                                          "stride_remote_request", qos, nullptr),
-                         "topic stride_remote_request"));
-  reply = entity(check(
-      dds_create_topic(participant, &stride_remote_reply_desc, "stride_remote_reply", qos, nullptr),
-      "topic stride_remote_reply"));
-  dds_delete_qos(qos);
-  qos = announcement_qos(std::chrono::milliseconds(0));
-  worker_info = entity(check(dds_create_topic(participant, &stride_remote_worker_info_desc,
-                                              "stride_remote_worker_info", qos, nullptr),
-                             "topic stride_remote_worker_info"));
-  dds_delete_qos(qos);
 }
 
 dds_qos_t* reliable_qos() {

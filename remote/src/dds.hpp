@@ -1,6 +1,6 @@
 // A thin C++ layer over Cyclone DDS's C API (Debian ships no C++ binding): entities that delete
-// themselves, the domain set up from the project's configuration, the QoS the protocol uses, and
-// typed take/write of the generated wire types.
+// themselves, the domain set up from the project's configuration, the QoS the protocols use, and
+// typed take of the generated wire types. Position independent: FMUs link it too.
 #ifndef STRIDE_REMOTE_DDS_HPP
 #define STRIDE_REMOTE_DDS_HPP
 
@@ -49,14 +49,6 @@ dds_return_t check(dds_return_t rc, const std::string& what);
 /// domain up (the configuration file, else CYCLONEDDS_URI, else the loopback configuration);
 /// later calls with another configuration for the same domain are an error.
 entity make_participant(const dds_settings& settings);
-
-/// The three topics of the protocol on one participant.
-struct topics {
-  entity worker_info;
-  entity request;
-  entity reply;
-  explicit topics(dds_entity_t participant);
-};
 
 /// QoS of the request and reply paths: reliable, every sample kept until delivered.
 dds_qos_t* reliable_qos();

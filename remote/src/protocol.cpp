@@ -163,4 +163,21 @@ std::vector<std::byte> get_blob(const dds_sequence_octet& in) {
   return {p, p + in._length};
 }
 
+topics::topics(dds_entity_t participant) {
+  dds_qos_t* qos = dds::reliable_qos();
+  request = dds::entity(dds::check(dds_create_topic(participant, &stride_remote_request_desc,
+                                                    "stride_remote_request", qos, nullptr),
+                                   "topic stride_remote_request"));
+  reply = dds::entity(dds::check(
+      dds_create_topic(participant, &stride_remote_reply_desc, "stride_remote_reply", qos, nullptr),
+      "topic stride_remote_reply"));
+  dds_delete_qos(qos);
+  qos = dds::announcement_qos(std::chrono::milliseconds(0));
+  worker_info =
+      dds::entity(dds::check(dds_create_topic(participant, &stride_remote_worker_info_desc,
+                                              "stride_remote_worker_info", qos, nullptr),
+                             "topic stride_remote_worker_info"));
+  dds_delete_qos(qos);
+}
+
 }  // namespace stride::remote

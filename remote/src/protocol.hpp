@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "dds.hpp"
 #include "stride/cosim/component.hpp"
 #include "stride_remote.h"
 
@@ -84,6 +85,14 @@ bool same_shape(const cosim::value_block& a, const cosim::value_block& b);
 /// Borrows `bytes` into a wire octet sequence.
 void put_blob(std::span<const std::byte> bytes, dds_sequence_octet& out);
 std::vector<std::byte> get_blob(const dds_sequence_octet& in);
+
+/// The three topics of the protocol on one participant.
+struct topics {
+  dds::entity worker_info;
+  dds::entity request;
+  dds::entity reply;
+  explicit topics(dds_entity_t participant);
+};
 
 }  // namespace stride::remote
 

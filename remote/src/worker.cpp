@@ -393,7 +393,7 @@ class host {
   worker_options options_;
   std::string name_;
   dds::entity participant_;
-  dds::topics topics_;
+  topics topics_;
   cosim::temp_dir cache_;  // shipped archives, by content hash
   dds::entity request_subscriber_;
   dds::entity requests_;
@@ -429,7 +429,7 @@ void serve(const worker_options& options, const std::atomic<bool>& stop) {
 std::vector<worker_description> visible_workers(const dds_settings& dds,
                                                 std::chrono::milliseconds discovery) {
   dds::entity participant = dds::make_participant(dds);
-  dds::topics t(participant.get());
+  topics t(participant.get());
   dds_qos_t* qos = dds::announcement_qos(std::chrono::milliseconds(0));
   dds::entity reader(dds::check(
       dds_create_reader(participant.get(), t.worker_info.get(), qos, nullptr), "reader"));

@@ -1,12 +1,10 @@
 #include "stride/study/figures.hpp"
 
+#include "gnuplot.hpp"
 #include "stride/learner/artefacts.hpp"
 #include "stride/study/run_folder.hpp"
 
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -26,46 +24,9 @@ csv_table read_csv(const fs::path& file) {
   return learner::read_csv_log(file);
 }
 
-void write_text(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
-std::string num(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-// gnuplot single-quoted string
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'')
-      out += "''";
-    else
-      out += c;
-  }
-  return out + "'";
-}
-
-void run_gnuplot(const fs::path& script) {
-  const fs::path err = script.string() + ".err";
-  const std::string cmd = "gnuplot " + quote(script.string()) + " 2> " + quote(err.string());
-  const int status = std::system(cmd.c_str());
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::ifstream in(err);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
-      throw std::runtime_error(
-          "gnuplot not found: install the Debian package gnuplot-nox (scripts/install-deps.sh)");
-    }
-    throw std::runtime_error("gnuplot failed on " + script.string() + ": " + text.str());
-  }
-  fs::remove(err);
-}
+using gnuplot::num;
+using gnuplot::quote;
+using gnuplot::write_text;
 
 const char* k_terminal = "set terminal pngcairo size 960,680 noenhanced font ',11'\n";
 
@@ -146,7 +107,7 @@ void heatmap(const figure_context& fc, const fs::path& table_file, const std::st
         quote("best: " + num(best_x) + ", " + num(best_y)) + "\n" + num(best_x) + " " +
         num(best_y) + "\ne\n";
   write_text(base.string() + ".gp", gp);
-  run_gnuplot(base.string() + ".gp");
+  gnuplot::run(base.string() + ".gp");
   fc.written->push_back(base.string() + ".png");
 }
 
@@ -174,7 +135,7 @@ void profiles(const figure_context& fc, const csv_table& t) {
   }
   gp += "unset multiplot\n";
   write_text(base.string() + ".gp", gp);
-  run_gnuplot(base.string() + ".gp");
+  gnuplot::run(base.string() + ".gp");
   fc.written->push_back(base.string() + ".png");
 }
 
@@ -200,7 +161,7 @@ void episode_series(const figure_context& fc, const csv_table& t, const std::str
         " using 1:2 with lines lc rgb '#a0a0a0' title 'per episode', '' using 1:3 with lines lw "
         "3 lc rgb '#c03020' title '50-episode moving average'\n";
   write_text(base.string() + ".gp", gp);
-  run_gnuplot(base.string() + ".gp");
+  gnuplot::run(base.string() + ".gp");
   fc.written->push_back(base.string() + ".png");
 }
 
@@ -251,7 +212,7 @@ void paths_figure(const figure_context& fc, const fs::path& paths_file) {
         "set cblabel 'episode'\nset palette rgb 30,31,32\n";
   gp += "plot " + quote(base.string() + ".dat") + " using 1:2:3 with lines lc palette notitle\n";
   write_text(base.string() + ".gp", gp);
-  run_gnuplot(base.string() + ".gp");
+  gnuplot::run(base.string() + ".gp");
   fc.written->push_back(base.string() + ".png");
 }
 
@@ -335,7 +296,7 @@ void evaluation_figures(const fs::path& dir, const fs::path& figures,
         "yerrorbars lc rgb 'black' pt 0 notitle, '' using 1:5:(sprintf('%d falls, %d starts', "
         "$6, $7)) with labels offset 0,1 notitle\n";
   write_text(base.string() + ".gp", gp);
-  run_gnuplot(base.string() + ".gp");
+  gnuplot::run(base.string() + ".gp");
   written->push_back(base.string() + ".png");
 
   // the evaluators' paths in one figure, one colour per point
@@ -366,7 +327,7 @@ void evaluation_figures(const fs::path& dir, const fs::path& figures,
          "set size ratio -1\n";
     g += "plot " + plots + "\n";
     write_text(pb.string() + ".gp", g);
-    run_gnuplot(pb.string() + ".gp");
+    gnuplot::run(pb.string() + ".gp");
     written->push_back(pb.string() + ".png");
   }
 }

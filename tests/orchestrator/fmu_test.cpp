@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -19,6 +20,7 @@
 #include "stride/cosim/fmu.hpp"
 #include "stride/cosim/observers.hpp"
 #include "stride/cosim/run.hpp"
+#include "stride/cosim/run_agents.hpp"
 #include "stride/cosim/system_builder.hpp"
 #include "stride/fmi2/fmi2_api.h"
 #include "zip_writer.hpp"
@@ -471,6 +473,82 @@ TEST_F(cosim_fmu_test, loop_through_feedthrough_outputs_is_found_from_model_stru
   EXPECT_NO_THROW(build_system(s, o));
   s.connections[1] = {"b.integral", "a.u", false, {}};  // no feedthrough: fine
   EXPECT_NO_THROW(build_system(s, o));
+}
+
+// Agents (stride/cosim/run_agents.hpp): the system run as separate runs at once, each with its
+// ${agent}; a plain run has ${agent} = 1 and an empty ${shared_table}.
+TEST_F(cosim_fmu_test, agents_are_separate_runs_with_their_own_number) {
+  auto o = options("agents");
+  o.overrides = {"a.offset=${agent}", "a.label=table=${shared_table};"};
+  agents_options a;
+  a.count = 3;
+  a.shared_table = "T";
+  int abandoned = 0;
+  a.abandon = [&](const std::string&) { ++abandoned; };
+  const agents_report r = run_agents(parse_system_file(k_data / "stride_test_pair.xml"), o, a);
+  ASSERT_EQ(r.agents.size(), 3u);
+  for (int k = 1; k <= 3; ++k) {
+    const fs::path dir = o.output_dir / ("agent" + std::to_string(k));
+    EXPECT_EQ(r.agents[static_cast<std::size_t>(k - 1)].output_dir, dir);
+    EXPECT_EQ(last_value(dir / "results.csv", "a.y"), std::to_string(3 + k));  // 3 * 1 + k
+    EXPECT_EQ(last_value(dir / "results.csv", "b.echo"), "stridetable=T;");    // b.label + a.echo
+    EXPECT_THAT(read_text(dir / "manifest.json"), HasSubstr("\"status\": \"ok\""));
+  }
+  EXPECT_EQ(abandoned, 0);
+  const std::string manifest = read_text(o.output_dir / "manifest.json");
+  EXPECT_THAT(manifest, HasSubstr("\"agents\": 3"));
+  EXPECT_THAT(manifest, HasSubstr("\"status\": \"ok\""));
+  EXPECT_THAT(read_text(o.output_dir / "system.xml"), HasSubstr("<agents count=\"3\""));
+
+  auto plain = options("plain");
+  plain.overrides = {"a.label=${agent}|${shared_table}|"};
+  const auto report = run_system(parse_system_file(k_data / "stride_test_pair.xml"), plain);
+  EXPECT_EQ(last_value(report.results_file, "b.echo"), "stride1||");
+}
+
+TEST_F(cosim_fmu_test, a_failing_agent_is_lost_and_the_others_go_on) {
+  auto o = options("agents");
+  o.overrides = {"a.offset=${agent}000"};  // agent 2's 2000 is out of range (-1000..1000)
+  agents_options a;
+  a.count = 2;
+  std::vector<std::pair<int, std::string>> lost;
+  std::mutex m;
+  a.lost = [&](int agent, const std::string& why) {
+    std::lock_guard lock(m);
+    lost.emplace_back(agent, why);
+  };
+  const agents_report r = run_agents(parse_system_file(k_data / "stride_test_pair.xml"), o, a);
+  EXPECT_EQ(r.lost(), 1u);
+  EXPECT_TRUE(r.errors[0].empty());
+  EXPECT_THAT(r.errors[1], HasSubstr("fmi2SetReal"));
+  ASSERT_EQ(lost.size(), 1u);
+  EXPECT_EQ(lost[0].first, 2);
+  EXPECT_EQ(r.agents[0].result.steps, 100);  // agent 1 ran to its stop time
+  const std::string manifest = read_text(o.output_dir / "manifest.json");
+  EXPECT_THAT(manifest, HasSubstr("\"status\": \"partial\""));
+  EXPECT_THAT(manifest, HasSubstr("\"status\": \"lost\", \"error\": "));
+
+  // every agent failing fails the run
+  auto all = options("all");
+  all.overrides = {"a.offset=${agent}0000"};
+  EXPECT_THROW(run_agents(parse_system_file(k_data / "stride_test_pair.xml"), all, a), error);
+  EXPECT_THAT(read_text(all.output_dir / "manifest.json"), HasSubstr("\"status\": \"error\""));
+}
+
+TEST_F(cosim_fmu_test, a_system_with_agents_is_not_run_as_one) {
+  system_structure s = parse_system_file(k_data / "stride_test_pair.xml");
+  s.agents.count = 2;
+  try {
+    run_system(s, options("one"));
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("has <agents>: run it with run_agents"));
+  }
+  auto o = options("resume");
+  o.resume_dir = scratch.path() / "no-such-run";
+  agents_options a;
+  a.count = 2;
+  EXPECT_THROW(run_agents(s, o, a), validation_error);
 }
 
 }  // namespace

@@ -159,7 +159,7 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   }
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<wire/>\n</system>"),
             "t/test.xml:3: unknown element <wire> (expected simulation, component, connection, "
-            "replicate or record)");
+            "replicate, record or agents)");
   EXPECT_EQ(error_of("<system>\n<simulation step='0.0000000001'/>\n<component name='a' fmu='m'/>"
                      "</system>"),
             "t/test.xml:2: step: '0.0000000001' is not a whole number of nanoseconds");
@@ -178,6 +178,41 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<record file='../x.csv'/>"
                      "</system>"),
             "t/test.xml:3: file=\"../x.csv\" must be a relative path inside the output folder");
+}
+
+TEST(cosim_system_xml, agents_are_read_written_and_checked) {
+  const system_structure s = parse(
+      "<system>\n<agents count='4' mode='asynchronous'/>\n<component name='a' fmu='m'/>"
+      "</system>");
+  EXPECT_EQ(s.agents.count, 4);
+  EXPECT_FALSE(s.agents.synchronous);
+  EXPECT_EQ(s.agents.where.str(), "t/test.xml:2");
+  const system_structure back = parse(to_xml(s, false));
+  EXPECT_EQ(back.agents.count, 4);
+  EXPECT_FALSE(back.agents.synchronous);
+  EXPECT_TRUE(parse("<system><agents count='2'/><component name='a' fmu='m'/></system>")
+                  .agents.synchronous);
+  EXPECT_EQ(parse("<system><component name='a' fmu='m'/></system>").agents.count, 0);
+  EXPECT_EQ(to_xml(parse("<system><component name='a' fmu='m'/></system>"), false).find("<agents"),
+            std::string::npos);
+  auto error_of = [](const std::string& xml) {
+    try {
+      parse(xml);
+    } catch (const validation_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of("<system>\n<agents count='0'/><component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: count=\"0\" is not a positive integer");
+  EXPECT_EQ(error_of("<system>\n<agents count='2' mode='eventually'/>"
+                     "<component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: mode \"eventually\" is not synchronous or asynchronous");
+  EXPECT_EQ(error_of("<system><agents count='2'/>\n<agents count='3'/>"
+                     "<component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: more than one <agents>");
+  EXPECT_EQ(error_of("<system>\n<agents/><component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: <agents> needs a count attribute");
 }
 
 TEST(cosim_system_builder, builds_the_chain_with_groups_parameters_and_decimation) {

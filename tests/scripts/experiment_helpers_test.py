@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Tests of scripts/speed_map.py, scripts/seed_spread.py (against the built `stride` CLI) and
-scripts/compare_v_tables.py."""
+"""Tests of scripts/speed_map.py (a caller of `stride sweep`), scripts/seed_spread.py (against the
+built `stride` CLI) and scripts/compare_v_tables.py."""
 import csv
 import os
 import subprocess
@@ -76,12 +76,12 @@ class speed_map(unittest.TestCase):
             missing = run(SPEED_MAP, "--stride", os.path.join(out, "nothing"), "--output", out)
             self.assertNotEqual(missing.returncode, 0)
             self.assertIn("not found", missing.stderr)
-            # a parameter the system does not have: stride's own message comes through
+            # a parameter the system does not have: stride sweep's own message comes through
             wrong = run(SPEED_MAP, "--stride", CLI, "--output", out, "--stop-time", "1",
                         "--grid", "period_time:600:600:1,swing_right_left:20:20:1",
                         "--set", "gait.no_such_variable=1")
             self.assertNotEqual(wrong.returncode, 0)
-            self.assertIn("point 600,20: stride run failed", wrong.stderr)
+            self.assertIn("point 600,20 cannot run", wrong.stderr)
             self.assertIn("no_such_variable", wrong.stderr)
 
 

@@ -121,6 +121,17 @@ void write_checkpoint(const fs::path& file, const checkpoint& c) {
     w.put_string(name);
     w.put(size);
   }
+  if (c.shared) {  // an optional trailing section: checkpoints without it read as before
+    const shared_checkpoint& sh = *c.shared;
+    w.put(sh.round);
+    w.put(static_cast<std::uint64_t>(sh.entries.size()));
+    for (std::size_t i = 0; i < sh.entries.size(); ++i) {
+      w.put(sh.entries[i]);
+      w.put(sh.increments[i]);
+    }
+    w.put(sh.merged_updates);
+    w.put(sh.snapshots_written);
+  }
   const fs::path tmp = file.string() + ".tmp";
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw learner_error("cannot write " + tmp.string() + ": " + errno_text());
@@ -174,6 +185,19 @@ checkpoint read_checkpoint(const fs::path& file) {
   for (std::uint64_t i = 0; i < nf; ++i) {
     std::string name = r.get_string();
     c.file_sizes[name] = r.get<std::uint64_t>();
+  }
+  if (!r.at_end()) {
+    shared_checkpoint sh;
+    sh.round = r.get<std::int64_t>();
+    const auto ne = r.get<std::uint64_t>();
+    r.need(ne * (sizeof(std::uint32_t) + sizeof(double)));
+    for (std::uint64_t i = 0; i < ne; ++i) {
+      sh.entries.push_back(r.get<std::uint32_t>());
+      sh.increments.push_back(r.get<double>());
+    }
+    sh.merged_updates = r.get<std::int64_t>();
+    sh.snapshots_written = r.get<std::uint64_t>();
+    c.shared = std::move(sh);
   }
   if (!r.at_end()) throw learner_error(file.string() + ": trailing bytes after the checkpoint");
   return c;

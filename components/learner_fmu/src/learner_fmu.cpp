@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "shared_values.hpp"
 #include "stride/learner/artefacts.hpp"
 #include "stride/learner/session.hpp"
 #include "stride/sdk/fmu.hpp"
@@ -73,6 +74,8 @@ struct learner_data {
   sdk::text output_dir{};
   sdk::text resume{};
   sdk::text snapshot_steps{};
+  sdk::text shared_table{};
+  int agent = 1;
   int path_every = 1;
   bool log_steps = true;
   bool log_progress = true;
@@ -258,6 +261,15 @@ class learner_model : public sdk::model_base<learner_data> {
     t.add("snapshot_steps", &d::snapshot_steps)
         .parameter()
         .describe("RL steps after which v_snapshot_<N>.csv is written, ',' between");
+    t.add("shared_table", &d::shared_table)
+        .parameter()
+        .describe(
+            "V shared with other agents: the table's endpoint ('' = V of its own; "
+            "${shared_table}, docs/swarm.md)");
+    t.add("agent", &d::agent)
+        .parameter()
+        .min(1)
+        .describe("This agent's number when V is shared (${agent}): its seed and its share");
     t.add("path_every", &d::path_every)
         .parameter()
         .min(0)
@@ -336,7 +348,10 @@ class learner_model : public sdk::model_base<learner_data> {
     }
     values_ = dense_value_table(config_.grid.size(), config_.initial_value);
     traces_.clear();
-    session_ = std::make_unique<session>(config_, data_.session, values_, traces_);
+    shared_.reset();
+    next_snapshot_ = 0;
+    std::optional<remote::table_endpoint> shared_table;
+    if (!data_.shared_table.view().empty()) shared_table = agent_config();
 
     std::optional<checkpoint> ck;
     if (!resume.empty()) {
@@ -354,6 +369,9 @@ class learner_model : public sdk::model_base<learner_data> {
                               " (killed before the first episode ended?): starting afresh");
       }
     }
+    if (shared_table) join_shared_table(*shared_table, !resume.empty(), ck);
+    session_ = std::make_unique<session>(
+        config_, data_.session, shared_ ? static_cast<value_table&>(*shared_) : values_, traces_);
     if (!out.empty()) {
       writer_ = artefact_writer(fs::path(out), config_.grid, data_.log_steps,
                                 ck ? &ck->file_sizes : nullptr);
@@ -471,6 +489,69 @@ class learner_model : public sdk::model_base<learner_data> {
   }
 
  private:
+  // an agent sharing V: its own seed stream and its share of total_steps
+  remote::table_endpoint agent_config() {
+    remote::table_endpoint where;
+    try {
+      where = remote::table_endpoint::parse(data_.shared_table.view());
+    } catch (const std::invalid_argument& e) {
+      throw sdk::model_error(std::string("parameter shared_table: ") + e.what());
+    }
+    if (data_.agent > where.agents) {
+      throw sdk::model_error("parameter agent: " + std::to_string(data_.agent) +
+                             " is more than the shared table's " + std::to_string(where.agents) +
+                             " agents");
+    }
+    if (config_.mode != learner_mode::learn) {
+      throw sdk::model_error("parameter shared_table: only a learning learner (mode 0) shares V");
+    }
+    if (config_.total_steps <= 0) {
+      throw sdk::model_error("parameter total_steps: agents sharing V need a total (> 0)");
+    }
+    config_.seed = agent_seed(config_.seed, data_.agent);
+    // the run's total, shared: every agent walks the same number of rounds
+    config_.total_steps = (config_.total_steps + where.agents - 1) / where.agents;
+    return where;
+  }
+
+  // joins the table; a resumed agent says after which round it continues
+  void join_shared_table(const remote::table_endpoint& where, bool resuming,
+                         const std::optional<checkpoint>& ck) {
+    if (ck && !ck->shared) {
+      throw sdk::model_error("resume: the checkpoint is of a learner that did not share V");
+    }
+    shared_resume resumed;
+    const shared_resume* from = nullptr;
+    if (resuming) {
+      if (ck) {
+        resumed.round = ck->shared->round;
+        resumed.entries = ck->shared->entries;
+        resumed.increments = ck->shared->increments;
+        resumed.merged_updates = ck->shared->merged_updates;
+        next_snapshot_ = static_cast<std::size_t>(ck->shared->snapshots_written);
+      }
+      from = &resumed;
+    }
+    try {
+      shared_ = std::make_unique<shared_values>(
+          values_, std::vector<double>(config_.grid.size(), config_.initial_value), where,
+          data_.agent, config_.total_steps,
+          [this](const remote::table_snapshot& t) { on_merged(t); }, from);
+    } catch (const std::exception& e) {
+      throw sdk::model_error(e.what());
+    }
+  }
+
+  // agent 1 writes the V snapshots the merged tables pass (RL steps of all agents counted)
+  void on_merged(const remote::table_snapshot& t) {
+    if (data_.agent != 1 || !writer_.active()) return;
+    while (next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t.updates) {
+      write_value_table(writer_.dir() / run_files::snapshot(snapshots_[next_snapshot_]),
+                        config_.grid, values_);
+      ++next_snapshot_;
+    }
+  }
+
   learner_config make_config() const {
     try {
       learner_config c;
@@ -509,7 +590,7 @@ class learner_model : public sdk::model_base<learner_data> {
   }
 
   void on_step(const step_record& s) {
-    if (config_.mode == learner_mode::learn &&
+    if (config_.mode == learner_mode::learn && !shared_ &&
         std::binary_search(snapshots_.begin(), snapshots_.end(), s.rl_step) && writer_.active()) {
       write_value_table(writer_.dir() / run_files::snapshot(s.rl_step), config_.grid, values_);
     }
@@ -525,6 +606,15 @@ class learner_model : public sdk::model_base<learner_data> {
       ck.values = values_.values();
       ck.traces = traces_.entries;
       ck.file_sizes = writer_.flush();
+      if (shared_) {
+        shared_checkpoint sh;
+        sh.round = shared_->last_round();
+        sh.entries = shared_->last_entries();
+        sh.increments = shared_->last_increments();
+        sh.merged_updates = shared_->merged_updates();
+        sh.snapshots_written = next_snapshot_;
+        ck.shared = std::move(sh);
+      }
       write_checkpoint(writer_.dir() / run_files::checkpoint, ck);
     }
     log_progress(e, finished);
@@ -568,11 +658,21 @@ class learner_model : public sdk::model_base<learner_data> {
     if (data_.finalized) return;
     data_.finalized = true;
     if (config_.mode == learner_mode::learn) {
+      // a shared table: every agent takes the final table (after every agent's last step);
+      // agent 1 writes it. A run stopped early writes agent 1's replica as it is.
+      if (shared_ && session_->phase() == walk_phase::finished) {
+        try {
+          shared_->finish();
+        } catch (const learner_error& e) {
+          throw sdk::model_error(e.what());
+        }
+      }
       const best_summary b = summarize_best(config_.grid, values_);
-      if (writer_.active()) {
+      if (writer_.active() && (!shared_ || data_.agent == 1)) {
         write_value_table(writer_.dir() / run_files::value_table, config_.grid, values_);
-        write_best(writer_.dir(), b, config_.rules, data_.session.rl_step, data_.session.episode,
-                   data_.session.total_falls);
+        write_best(writer_.dir(), b, config_.rules,
+                   shared_ ? shared_->merged_updates() : data_.session.rl_step,
+                   data_.session.episode, data_.session.total_falls);
       }
       if (data_.log_progress) {
         std::string text = b.text;
@@ -641,6 +741,8 @@ class learner_model : public sdk::model_base<learner_data> {
   sdk::instance_context context_;
   learner_config config_;
   dense_value_table values_;
+  std::unique_ptr<shared_values> shared_;  // V shared with other agents (else values_ alone)
+  std::size_t next_snapshot_ = 0;
   eligibility_traces traces_;
   std::unique_ptr<session> session_;
   artefact_writer writer_;

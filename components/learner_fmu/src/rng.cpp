@@ -25,6 +25,14 @@ rng_state seed_rng(std::uint64_t seed) {
   return r;
 }
 
+std::uint64_t agent_seed(std::uint64_t seed, int agent) {
+  if (agent <= 1) return seed;
+  // a constant other than splitmix64's increment, so that agent seeds do not land on the
+  // sequence of words seed_rng draws from `seed`
+  std::uint64_t x = seed + static_cast<std::uint64_t>(agent) * 0xD1B54A32D192ED03ULL;
+  return splitmix64(x);
+}
+
 std::uint64_t next_u64(rng_state& r) {
   std::uint64_t* s = r.s;
   const std::uint64_t result = rotl(s[1] * 5, 7) * 9;

@@ -304,9 +304,11 @@ void session::finish_step(advance_report& r, const plant_inputs& in, bool fell, 
     }
   } else {
     const std::size_t s = rec.state;
+    v_.before_update(st_.rl_step);
     const std::size_t a = choose_epsilon_greedy(v_, cfg_.grid, s, cfg_.epsilon, st_.rng);
     const std::size_t s_next = successor(cfg_.grid, s, a);
     const double delta = td_lambda_update(v_, z_, s, reward, s_next, cfg_.td);
+    v_.after_update(st_.rl_step);
     st_.last_delta = delta;
     rec.action = a;
     rec.next_state = s_next;

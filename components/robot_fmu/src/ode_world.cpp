@@ -15,15 +15,17 @@ namespace {
 
 constexpr double k_pi = 3.14159265358979323846;
 
-// dInitODE2 once per process, before any world exists; dCloseODE when the library unloads
-// (in an FMU: at dlclose), which frees ODE's global caches
-void init_ode_once() {
-  struct ode_library {
-    ode_library() { dInitODE2(0); }
-    ~ode_library() { dCloseODE(); }
-  };
-  static const ode_library library;
-}
+// ODE's process-wide set-up when this library loads and its tear-down (freeing ODE's global
+// caches) when it unloads (in an FMU: dlopen and dlclose). ODE counts them without atomics, so
+// they must not run concurrently with another copy's: the importer loads and unloads FMU
+// binaries one at a time, which covers static constructors and destructors, not lazy set-up.
+struct ode_library {
+  ode_library() { dInitODE2(0); }
+  ~ode_library() { dCloseODE(); }
+  ode_library(const ode_library&) = delete;
+  ode_library& operator=(const ode_library&) = delete;
+};
+const ode_library g_ode_library;
 
 dGeomID make_geom(const collision_shape& s) {
   switch (s.type) {
@@ -90,7 +92,6 @@ Eigen::Vector3d vec(const dReal* v) {
 }
 
 ode_world::ode_world(const robot_model& m, const robot_config& config) : model(m) {
-  init_ode_once();
   ensure_thread_data();
   try {
     build(config);

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,14 +42,19 @@ struct run_options {
   /// Build, check and initialize everything as for the run, then end before the first step
   /// (`stride validate`): no manifest is written.
   bool initialize_only = false;
+  /// Further `${name}` values. `${agent}` (default "1") and `${shared_table}` (default "") are
+  /// set by run_agents (stride/cosim/run_agents.hpp) for each agent.
+  std::map<std::string, std::string> placeholders;
 };
 
-/// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder
-/// and `${resume}` by the folder being resumed ("" when not resuming); returns how many values
-/// mention `${resume}`. \throws validation_error naming file and line for any other `${...}`.
+/// Replaces the placeholders in every parameter value: `${output_dir}` by the run's output folder,
+/// `${resume}` by the folder being resumed ("" when not resuming) and `${name}` by
+/// `more[name]`; returns how many values mention `${resume}`. \throws validation_error naming
+/// file and line for any other `${...}`.
 std::size_t substitute_placeholders(system_structure& system,
                                     const std::filesystem::path& output_dir,
-                                    const std::filesystem::path& resume_dir);
+                                    const std::filesystem::path& resume_dir,
+                                    const std::map<std::string, std::string>& more = {});
 
 /// What a run produced.
 struct run_report {
@@ -63,9 +69,15 @@ struct run_report {
   std::string error;  ///< non-empty if the run failed (then also thrown)
 };
 
+/// A results file name not yet in `dir` ("results-resumed.csv", "results-resumed-2.csv" ...), so
+/// that an interrupted run's results stay as they are when it is resumed.
+std::string fresh_results_name(const std::filesystem::path& dir, const std::string& name);
+
 /// The default output folder name for a system, relative to the working directory.
 std::filesystem::path default_output_dir(const system_structure& system);
 
+/// A system with <agents> is run by run_agents (one call of this per agent); here it is an
+/// error, except for `initialize_only` (one agent is checked).
 /// Applies overrides, expands replica groups, substitutes placeholders, builds, creates the
 /// output folder, writes `system.xml` (with overrides; groups and placeholders kept), records,
 /// runs and writes `manifest.json` (with every parameter value the system sets). On a run-time

@@ -68,6 +68,18 @@ struct record_spec {
   source_location where;
 };
 
+/// Several agents: the whole system run `count` times at once, each copy a run of its own with
+/// its own clock (docs/swarm.md). Copies share only what their components share through
+/// `${shared_table}`, merged as `synchronous` says.
+struct agents_spec {
+  int count = 0;  ///< 0: no <agents> (one run)
+  bool synchronous = true;
+  /// Agent k runs on worker `workers[(k - 1) % size]` (its components without a worker of their
+  /// own); empty: on threads of this process.
+  std::vector<std::string> workers;
+  source_location where;
+};
+
 /// `count` copies of a group of components with their internal connections. Copy k of member
 /// "gait" is the component "gait[k]" (k = 1..count); inside the group a member's name means the
 /// member of the same copy, other names mean components outside the group. Outside the group,
@@ -97,6 +109,7 @@ struct system_structure {
   std::vector<connection_spec> connections;
   std::vector<replica_group> groups;  ///< expanded by expand_replicas()
   record_spec record;
+  agents_spec agents;
 
   /// Convenience for C++ callers; each returns the added element.
   component_spec& add_component(std::string name, std::string fmu, int step_multiple = 1);

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +39,15 @@ std::string snapshot(std::int64_t rl_step);
 std::int64_t snapshot_step(const std::string& file_name);
 }  // namespace run_files
 
+/// What an agent sharing V (docs/swarm.md) adds to its checkpoint.
+struct shared_checkpoint {
+  std::int64_t round = 0;               ///< the last round it sent (its RL steps)
+  std::vector<std::uint32_t> entries;   ///< that round's update, to send again if it was
+  std::vector<double> increments;       ///< lost with the service
+  std::int64_t merged_updates = 0;      ///< updates in the newest merged table it took
+  std::uint64_t snapshots_written = 0;  ///< how many of snapshot_steps it wrote
+};
+
 /// A learner checkpoint: enough to continue a run exactly from an episode boundary.
 struct checkpoint {
   std::string config;            ///< learner_config::canonical() of the run
@@ -45,6 +55,7 @@ struct checkpoint {
   std::vector<double> values;    ///< V
   std::vector<eligibility_traces::entry> traces;
   std::map<std::string, std::uint64_t> file_sizes;  ///< artefact CSV sizes to truncate to
+  std::optional<shared_checkpoint> shared;          ///< V shared with other agents
 };
 
 /// Writes `file` atomically: `file`.tmp, flushed and synced, then renamed over `file`.

@@ -15,6 +15,10 @@ struct rng_state {
 /// The state for a seed (any value, 0 included).
 rng_state seed_rng(std::uint64_t seed);
 
+/// The seed of agent `agent` (1-based) of a run seeded with `seed`: agent 1 uses `seed` itself
+/// (one agent learns exactly as without sharing), the others seeds mixed from both.
+std::uint64_t agent_seed(std::uint64_t seed, int agent);
+
 /// Next 64 random bits.
 std::uint64_t next_u64(rng_state& r);
 

@@ -32,6 +32,11 @@ class value_table {
   virtual std::size_t size() const = 0;
   virtual double get(std::size_t s) const = 0;
   virtual void add(std::size_t s, double delta) = 0;
+  /// Around the update of RL step `step` (1-based; the choice of the next action included): a
+  /// table shared with other agents brings itself up to date before and passes the changes on
+  /// after. A table of one agent does nothing.
+  virtual void before_update(std::int64_t /*step*/) {}
+  virtual void after_update(std::int64_t /*step*/) {}
 };
 
 /// A value table held as one dense vector.

@@ -1,0 +1,34 @@
+#include "table_wire.hpp"
+
+namespace stride::remote::table_wire {
+
+dds::entity participant(const table_endpoint& where) {
+  return dds::make_participant(dds_settings{where.domain, where.config_file});
+}
+
+topics::topics(dds_entity_t participant) {
+  dds_qos_t* qos = update_qos();
+  update = dds::entity(dds::check(
+      dds_create_topic(participant, &stride_table_update_desc, "stride_table_update", qos, nullptr),
+      "topic stride_table_update"));
+  dds_delete_qos(qos);
+  qos = state_qos();
+  state = dds::entity(dds::check(dds_create_topic(participant, &stride_table_table_state_desc,
+                                                  "stride_table_state", qos, nullptr),
+                                 "topic stride_table_state"));
+  dds_delete_qos(qos);
+}
+
+dds_qos_t* update_qos() {
+  return dds::reliable_qos();
+}
+
+dds_qos_t* state_qos() {
+  dds_qos_t* qos = dds_create_qos();
+  dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(10));
+  dds_qset_durability(qos, DDS_DURABILITY_TRANSIENT_LOCAL);
+  dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+  return qos;
+}
+
+}  // namespace stride::remote::table_wire
