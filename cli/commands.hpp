@@ -51,6 +51,10 @@ struct run_extension {
 };
 
 int run(const run_arguments& args, const run_extension& extension);
+/// The part of `run` for a system with <agents> (cli/run_agents.cpp): `options` as `run` made
+/// them from `args`.
+int run_agents(cosim::system_structure system, cosim::run_options options,
+               const run_arguments& args, const run_extension& extension);
 
 struct test_arguments {
   std::filesystem::path suite;

@@ -93,36 +93,42 @@ table_client::table_client(const table_endpoint& where, int agent,
 
 table_client::~table_client() = default;
 
-void table_client::send(std::int64_t round, std::span<const std::uint32_t> entries,
-                        std::span<const double> increments, std::span<const double> initial,
-                        bool last) {
+namespace {
+
+void write_update(dds_entity_t writer, const table_endpoint& where, int agent, std::int64_t round,
+                  std::span<const std::uint32_t> entries, std::span<const double> increments,
+                  std::span<const double> initial, bool last, bool resumed) {
   if (entries.size() != increments.size()) {
     throw std::invalid_argument("shared table: entries and increments differ in length");
   }
   stride_table_update u{};
-  u.table = const_cast<char*>(impl_->where.table.c_str());
-  u.agent = impl_->agent;
+  u.table = const_cast<char*>(where.table.c_str());
+  u.agent = agent;
   u.round = round;
   table_wire::borrow(u.entries, entries);
   table_wire::borrow(u.increments, increments);
   table_wire::borrow(u.initial, initial);
   u.last = last;
-  dds::check(dds_write(impl_->writer.get(), &u), "shared table " + impl_->where.table + ": send");
+  u.resumed = resumed;
+  dds::check(dds_write(writer, &u), "shared table " + where.table + ": agent " +
+                                        std::to_string(agent) + " sending round " +
+                                        std::to_string(round));
+}
+
+}  // namespace
+
+void table_client::send(std::int64_t round, std::span<const std::uint32_t> entries,
+                        std::span<const double> increments, std::span<const double> initial,
+                        bool last) {
+  write_update(impl_->writer.get(), impl_->where, impl_->agent, round, entries, increments, initial,
+               last, false);
 }
 
 void table_client::resume(std::int64_t round, std::span<const std::uint32_t> entries,
                           std::span<const double> increments, std::span<const double> initial,
                           bool last) {
-  stride_table_update u{};
-  u.table = const_cast<char*>(impl_->where.table.c_str());
-  u.agent = impl_->agent;
-  u.round = round;
-  table_wire::borrow(u.entries, entries);
-  table_wire::borrow(u.increments, increments);
-  table_wire::borrow(u.initial, initial);
-  u.resumed = true;
-  u.last = last;
-  dds::check(dds_write(impl_->writer.get(), &u), "shared table " + impl_->where.table + ": resume");
+  write_update(impl_->writer.get(), impl_->where, impl_->agent, round, entries, increments, initial,
+               last, true);
 }
 
 const table_snapshot& table_client::wait_round(std::int64_t round,

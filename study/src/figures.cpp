@@ -26,17 +26,10 @@ csv_table read_csv(const fs::path& file) {
 
 using gnuplot::num;
 using gnuplot::quote;
+using gnuplot::unit_of;
 using gnuplot::write_text;
 
 const char* k_terminal = "set terminal pngcairo size 960,680 noenhanced font ',11'\n";
-
-std::string unit_of(const std::string& name) {
-  if (name == "period_time") return " (ms)";
-  if (name.find("swing") != std::string::npos || name.find("height") != std::string::npos ||
-      name.find("offset") != std::string::npos)
-    return " (mm)";
-  return "";
-}
 
 // moving average over the last `n` values (fewer at the start)
 std::vector<double> moving_average(const std::vector<double>& v, std::size_t n) {

@@ -20,6 +20,15 @@ std::string num(double v) {
   return std::string(buf, r.ptr);
 }
 
+std::string unit_of(const std::string& parameter) {
+  if (parameter == "period_time") return " (ms)";
+  if (parameter.find("swing") != std::string::npos ||
+      parameter.find("height") != std::string::npos ||
+      parameter.find("offset") != std::string::npos)
+    return " (mm)";
+  return "";
+}
+
 std::string quote(const std::string& s) {
   std::string out = "'";
   for (char c : s) {

@@ -10,6 +10,8 @@ namespace stride::study::gnuplot {
 
 /// Shortest text that reads back as `v`; "NaN" (which gnuplot leaves blank) for NaN.
 std::string num(double v);
+/// " (ms)" / " (mm)" for the gait parameters a study axis is named after, else "".
+std::string unit_of(const std::string& parameter);
 /// A gnuplot single-quoted string.
 std::string quote(const std::string& s);
 /// \throws std::runtime_error naming the file when it cannot be written.

@@ -14,18 +14,11 @@ namespace stride::study {
 namespace fs = std::filesystem;
 using gnuplot::num;
 using gnuplot::quote;
+using gnuplot::unit_of;
 
 namespace {
 
 enum speed_map_column { k_windows, k_falls, k_mean_speed, k_mean_reward };
-
-std::string unit_of(const std::string& name) {
-  if (name == "period_time") return " (ms)";
-  if (name.find("swing") != std::string::npos || name.find("height") != std::string::npos ||
-      name.find("offset") != std::string::npos)
-    return " (mm)";
-  return "";
-}
 
 void require_2d(const grid_table& t) {
   if (t.axes.size() != 2) throw std::runtime_error("a heat map needs a grid of two axes");

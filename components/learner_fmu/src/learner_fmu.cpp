@@ -5,7 +5,8 @@
 // Inputs   base_x, base_y (m), fallen (robot); footsteps (gait)
 // Params   grid, mode, eval_point, alpha, gamma, lambda, epsilon, steps_per_episode, max_falls,
 //          footsteps_per_step (W), settle_footsteps, k1, k2, negative_reward, initial_value,
-//          seed, total_steps, output_dir, resume, snapshot_steps, ... (all fixed)
+//          seed, total_steps, output_dir, resume, snapshot_steps, shared_table, agent, ...
+//          (all fixed; shared_table and agent: V shared with other agents, docs/swarm.md)
 // Outputs  value[1..4] (the current state's parameter values → gait parameters), reset_robot
 //          (counter → robot.reset and gait.restart), balance_on (→ gait.balance_on), progress
 //          variables (episode, rl_step, last_reward, state_value, sum_abs_dv, progress, ...)
@@ -520,17 +521,11 @@ class learner_model : public sdk::model_base<learner_data> {
     if (ck && !ck->shared) {
       throw sdk::model_error("resume: the checkpoint is of a learner that did not share V");
     }
-    shared_resume resumed;
-    const shared_resume* from = nullptr;
+    const shared_checkpoint none;  // resumed without a checkpoint: from round 0
+    const shared_checkpoint* from = nullptr;
     if (resuming) {
-      if (ck) {
-        resumed.round = ck->shared->round;
-        resumed.entries = ck->shared->entries;
-        resumed.increments = ck->shared->increments;
-        resumed.merged_updates = ck->shared->merged_updates;
-        next_snapshot_ = static_cast<std::size_t>(ck->shared->snapshots_written);
-      }
-      from = &resumed;
+      from = ck ? &*ck->shared : &none;
+      next_snapshot_ = static_cast<std::size_t>(from->snapshots_written);
     }
     try {
       shared_ = std::make_unique<shared_values>(

@@ -15,7 +15,7 @@ constexpr std::chrono::minutes k_round_timeout{5};
 
 shared_values::shared_values(dense_value_table& replica, std::vector<double> initial,
                              const remote::table_endpoint& where, int agent, std::int64_t last_step,
-                             merged_callback on_merged, const shared_resume* resumed)
+                             merged_callback on_merged, const shared_checkpoint* resumed)
     : replica_(replica),
       client_(where, agent),
       last_step_(last_step),

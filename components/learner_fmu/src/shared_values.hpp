@@ -9,18 +9,11 @@
 #include <functional>
 #include <vector>
 
+#include "stride/learner/artefacts.hpp"
 #include "stride/learner/td_lambda.hpp"
 #include "stride/remote/shared_table.hpp"
 
 namespace stride::learner {
-
-/// Where a resumed agent continues (its checkpoint; round 0: it had none).
-struct shared_resume {
-  std::int64_t round = 0;
-  std::vector<std::uint32_t> entries;  ///< its update of that round
-  std::vector<double> increments;
-  std::int64_t merged_updates = 0;
-};
 
 class shared_values final : public value_table {
  public:
@@ -28,10 +21,11 @@ class shared_values final : public value_table {
   using merged_callback = std::function<void(const remote::table_snapshot&)>;
 
   /// `initial` is the table every agent starts from; `last_step` this agent's final RL step;
-  /// `resumed` set when the run continues an interrupted one.
+  /// `resumed` set when the run continues an interrupted one: what this agent's checkpoint holds
+  /// (all zero without one).
   shared_values(dense_value_table& replica, std::vector<double> initial,
                 const remote::table_endpoint& where, int agent, std::int64_t last_step,
-                merged_callback on_merged, const shared_resume* resumed = nullptr);
+                merged_callback on_merged, const shared_checkpoint* resumed = nullptr);
 
   std::size_t size() const override { return replica_.size(); }
   double get(std::size_t s) const override { return replica_.get(s); }
