@@ -1,6 +1,7 @@
 #include "stride/cosim/execution.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "stride/cosim/error.hpp"
 
@@ -54,6 +55,37 @@ void execution::connect(variable_id from, variable_id to, connection_options opt
   connections_.push_back({from, to, std::move(options)});
 }
 
+namespace {
+
+// A value outside the variable's declared min..max: the FMU would refuse it at fmi2Set with a
+// status that names no variable, so it is refused here, named.
+void check_range(const variable_description& v, const scalar_value& value,
+                 const std::string& what) {
+  double x = 0;
+  if (const auto* d = std::get_if<double>(&value)) {
+    x = *d;
+  } else if (const auto* i = std::get_if<int>(&value)) {
+    x = *i;
+  } else {
+    return;
+  }
+  const auto bound = [](const std::optional<std::string>& text) -> std::optional<double> {
+    if (!text) return std::nullopt;
+    char* end = nullptr;
+    const double b = std::strtod(text->c_str(), &end);
+    if (end == text->c_str() || *end != '\0') return std::nullopt;
+    return b;
+  };
+  if (const auto lo = bound(v.min); lo && x < *lo) {
+    throw validation_error(what + " = " + format_scalar(value) + " is below its minimum " + *v.min);
+  }
+  if (const auto hi = bound(v.max); hi && x > *hi) {
+    throw validation_error(what + " = " + format_scalar(value) + " is above its maximum " + *v.max);
+  }
+}
+
+}  // namespace
+
 void execution::set_start_value(variable_id id, scalar_value value, const std::string& origin) {
   const std::string where = origin.empty() ? std::string() : origin + ": ";
   if (initialized_) throw validation_error(where + "cannot set start values after initialize()");
@@ -67,6 +99,7 @@ void execution::set_start_value(variable_id id, scalar_value value, const std::s
   if (v.variability == variability::constant) {
     throw validation_error(where + name + " is a constant");
   }
+  check_range(v, value, where + name);
   start_values& s = starts_[id.component];
   const auto mismatch = [&] {
     throw validation_error(where + name + " is " + std::string(to_string(v.type)) + ", the value " +

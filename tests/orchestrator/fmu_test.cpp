@@ -412,7 +412,9 @@ TEST_F(cosim_fmu_test, validate_refuses_what_run_would_refuse_before_stepping) {
                                  " --set b.stop_after_steps=-1",
                              scratch.path());
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_THAT(r.err, HasSubstr("'stop_after_steps': value -1 is outside [0, inf]"));
+  EXPECT_THAT(
+      r.err,
+      HasSubstr("--set b.stop_after_steps=-1: b.stop_after_steps = -1 is below its minimum 0"));
   const fs::path system = scratch.path() / "record.xml";
   std::ofstream(system) << "<system name='r'>\n<simulation stop='1' step='0.01'/>\n"
                            "<component name='a' fmu='stride_test'/>\n"
@@ -520,7 +522,7 @@ TEST_F(cosim_fmu_test, a_failing_agent_is_lost_and_the_others_go_on) {
   const agents_report r = run_agents(parse_system_file(k_data / "stride_test_pair.xml"), o, a);
   EXPECT_EQ(r.lost(), 1u);
   EXPECT_TRUE(r.errors[0].empty());
-  EXPECT_THAT(r.errors[1], HasSubstr("fmi2SetReal"));
+  EXPECT_THAT(r.errors[1], HasSubstr("a.offset = 2000 is above its maximum 1000"));
   ASSERT_EQ(lost.size(), 1u);
   EXPECT_EQ(lost[0].first, 2);
   EXPECT_EQ(r.agents[0].result.steps, 100);  // agent 1 ran to its stop time
@@ -533,6 +535,27 @@ TEST_F(cosim_fmu_test, a_failing_agent_is_lost_and_the_others_go_on) {
   all.overrides = {"a.offset=${agent}0000"};
   EXPECT_THROW(run_agents(parse_system_file(k_data / "stride_test_pair.xml"), all, a), error);
   EXPECT_THAT(read_text(all.output_dir / "manifest.json"), HasSubstr("\"status\": \"error\""));
+}
+
+TEST_F(cosim_fmu_test, start_values_outside_the_declared_range_are_refused_by_name) {
+  auto o = options("range");
+  o.overrides = {"a.gain=2e6"};
+  try {
+    run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(),
+                HasSubstr("--set a.gain=2e6: a.gain = 2e+06 is above its maximum 1000000"));
+  }
+  o.overrides = {"a.offset=-1000.5"};
+  try {
+    run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("a.offset = -1000.5 is below its minimum -1000"));
+  }
+  o.overrides = {"a.offset=-1000"};  // the bound itself is inside
+  EXPECT_NO_THROW(run_system(parse_system_file(k_data / "stride_test_pair.xml"), o));
 }
 
 TEST_F(cosim_fmu_test, a_system_with_agents_is_not_run_as_one) {
