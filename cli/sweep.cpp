@@ -22,6 +22,8 @@
 #include "stride/cosim/fmu.hpp"
 #include "stride/cosim/system_builder.hpp"
 #include "stride/cosim/time.hpp"
+#include "stride/remote/remote_placement.hpp"
+#include "workers.hpp"
 
 namespace stride::cli {
 
@@ -549,7 +551,10 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
 
   progress_line progress(points.size(), points.size() - to_run.size(), to_run.size(), args.quiet);
   std::atomic<std::size_t> next{0};
-  auto run_one = [&](std::size_t i) {
+  remote::timeouts limits;
+  limits.connect = std::chrono::milliseconds(static_cast<long>(args.worker_timeout * 1000));
+  // the k-th point started runs on worker k mod n: each point a run of its own there
+  auto run_one = [&](std::size_t i, std::size_t k) {
     const sweep_point& p = points[i];
     point_outcome& out = outcomes[i];
     const fs::path point_dir = points_dir / p.folder;
@@ -576,7 +581,12 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
         for (const auto& v : o.overrides) cosim::apply_override(checked, v);
         extension.check(checked);
       }
-      const cosim::run_report report = cosim::run_system(system, o);
+      cosim::system_structure placed = system;
+      if (!args.workers.empty()) {
+        placed = cosim::on_worker(system, args.workers[k % args.workers.size()]);
+        o.build.placements = {std::make_shared<remote::remote_placement>(args.dds, limits)};
+      }
+      const cosim::run_report report = cosim::run_system(placed, o);
       if (report.result.interrupted) {
         out.status = point_status_kind::interrupted;
         return;
@@ -593,7 +603,7 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
       if (interrupt.load()) return;
       const std::size_t k = next.fetch_add(1);
       if (k >= to_run.size()) return;
-      run_one(to_run[k]);
+      run_one(to_run[k], k);
       const point_outcome& out = outcomes[to_run[k]];
       if (out.status == point_status_kind::interrupted) return;
       if (out.status == point_status_kind::failed) {
@@ -709,9 +719,9 @@ CLI::App* add_sweep_command(CLI::App& app, sweep_extension extension) {
   }
   auto* cmd = app.add_subcommand(
       "sweep",
-      "Run a system once per point of a parameter grid, on threads of this process, into "
-      "DIR/points/<values>/ and one CSV (and, for a 2-D grid, a heat map); points already run "
-      "are kept, so an interrupted sweep continues (docs/sweep.md)");
+      "Run a system once per point of a parameter grid, on threads of this process (or on "
+      "workers), into DIR/points/<values>/ and one CSV (and, for a 2-D grid, a heat map); "
+      "points already run are kept, so an interrupted sweep continues (docs/sweep.md)");
   cmd->add_option("system", args->system, "System XML file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--grid", args->grids,
                   "comp.var=name:min:max:step[,name:min:max:step...]: the variable takes each "
@@ -737,6 +747,16 @@ CLI::App* add_sweep_command(CLI::App& app, sweep_extension extension) {
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
   cmd->add_flag("--quiet,-q", args->quiet, "No progress display");
+  cmd->add_option("--workers", args->workers,
+                  "Run the points on these `stride worker` processes in turn (names, "
+                  "comma-separated or the option repeated); --jobs points at a time")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  add_dds_options(*cmd, args->dds);
+  cmd->add_option("--worker-timeout", args->worker_timeout,
+                  "Seconds to wait for a worker to appear")
+      ->capture_default_str()
+      ->check(CLI::Range(0.1, 3600.0));
   cmd->callback([args, ext] {
     int code = 0;
     try {

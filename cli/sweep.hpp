@@ -1,6 +1,6 @@
 // `stride sweep`: every point of a parameter grid run as one `stride run` each (the library's
-// run_system), on threads of this process, into one CSV (docs/sweep.md). Generic: the grid is
-// comp.var parameters with ranges, the table holds what the caller asks for; an application
+// run_system), on threads of this process or on workers, into one CSV (docs/sweep.md). Generic: the
+// grid is comp.var parameters with ranges, the table holds what the caller asks for; an application
 // adds named collectors (the study's speed map) and the heat map through sweep_extension.
 #ifndef STRIDE_CLI_SWEEP_HPP
 #define STRIDE_CLI_SWEEP_HPP
@@ -15,6 +15,7 @@
 
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_structure.hpp"
+#include "stride/remote/settings.hpp"
 
 namespace stride::cli {
 
@@ -100,6 +101,11 @@ struct sweep_arguments {
   std::string stop_time;         ///< empty: the system's
   int jobs = 1;
   bool quiet = false;
+  /// point k (in the order they are started) runs on workers[k % size] (`stride worker`); empty:
+  /// in this process
+  std::vector<std::string> workers;
+  remote::dds_settings dds;
+  double worker_timeout = 10;  ///< seconds to wait for a worker to appear
 };
 
 /// Runs the sweep; 0 when every point ran and was collected, 1 when one failed, 130/143 when

@@ -58,6 +58,18 @@ std::string substitute_copy(const std::string& value, int k, int count, const st
 
 }  // namespace
 
+system_structure on_worker(system_structure system, const std::string& worker) {
+  for (auto& c : system.components) {
+    if (c.worker.empty()) c.worker = worker;
+  }
+  for (auto& g : system.groups) {
+    for (auto& c : g.components) {
+      if (c.worker.empty()) c.worker = worker;
+    }
+  }
+  return system;
+}
+
 system_structure expand_replicas(const system_structure& system) {
   system_structure out = system;
   out.groups.clear();

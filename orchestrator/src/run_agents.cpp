@@ -55,23 +55,6 @@ std::string manifest_json(const system_structure& s, const agents_report& r,
   return j.str();
 }
 
-// agent k's copy: its components without a worker of their own go to its worker
-system_structure agent_copy(system_structure system, std::size_t k) {
-  const auto& workers = system.agents.workers;
-  if (!workers.empty()) {
-    const std::string& w = workers[k % workers.size()];
-    for (auto& c : system.components) {
-      if (c.worker.empty()) c.worker = w;
-    }
-    for (auto& g : system.groups) {
-      for (auto& c : g.components) {
-        if (c.worker.empty()) c.worker = w;
-      }
-    }
-  }
-  return system;
-}
-
 }  // namespace
 
 agents_report run_agents(system_structure system, const run_options& options,
@@ -119,7 +102,9 @@ agents_report run_agents(system_structure system, const run_options& options,
         o.placeholders["agent"] = std::to_string(agent);
         o.placeholders["shared_table"] = agents.shared_table;
         if (agents.placements) o.build.placements = agents.placements(agent);
-        report.agents[k] = run_system(agent_copy(system, k), o);
+        const auto& workers = system.agents.workers;
+        report.agents[k] = run_system(
+            workers.empty() ? system : on_worker(system, workers[k % workers.size()]), o);
       } catch (const std::exception& e) {
         report.errors[k] = e.what();
         if (agents.lost) agents.lost(agent, e.what());

@@ -1,7 +1,7 @@
 // Agents on `stride worker` processes (docs/swarm.md): real workers on loopback, real
 // `stride run --agents`, the demo's closed loop with a shared V. Synchronous agents on workers
 // learn exactly what agents on threads learn; a worker killed in the middle of the run loses
-// its agent, and the others finish.
+// its agent, and the others finish. Sweep points on workers too.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -120,6 +120,41 @@ TEST_F(remote_agents, a_killed_worker_loses_its_agent_and_the_others_finish) {
   }
   EXPECT_EQ(rows, 455);
   EXPECT_EQ(read(scratch.path() / "run/agent1/v_table.csv").empty(), false);
+}
+
+// `stride sweep --workers`: the points run in turn on the workers, with the files of points
+// run in process
+TEST_F(remote_agents, sweep_points_on_workers_equal_points_in_process) {
+  auto w1 = start_worker("w1", 84);
+  auto w2 = start_worker("w2", 84);
+  ASSERT_TRUE(w1.ready() && w2.ready()) << w1.output() << w2.output();
+  const fs::path pair =
+      fs::path(STRIDE_SOURCE_DIR) / "tests/orchestrator/data/stride_test_pair.xml";
+  const auto sweep = [&](const std::string& out, const std::string& args) {
+    return run_command("'" + k_cli + "' sweep " + quoted(pair) +
+                           " --grid a.gain=1:4:1 --jobs 2 --quiet -o " +
+                           quoted(scratch.path() / out) + " " + args,
+                       scratch.path());
+  };
+  const auto local = sweep("local", "");
+  ASSERT_EQ(local.exit_code, 0) << local.err;
+  const auto remote = sweep("remote", "--workers w1,w2 --domain 84");
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_EQ(file("remote", "sweep.csv"), file("local", "sweep.csv"));
+  for (const char* point : {"1", "2", "3", "4"}) {
+    const std::string results = std::string("points/") + point + "/results.csv";
+    EXPECT_GT(file("local", results).size(), 1000u);
+    EXPECT_EQ(file("remote", results), file("local", results)) << point;
+  }
+  // each worker ran two of the four points
+  const auto runs = [](const std::string& log) {
+    std::size_t n = 0;
+    for (auto at = log.find(" begins"); at != std::string::npos; at = log.find(" begins", at + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_EQ(runs(w1.output()), 2u);
+  EXPECT_EQ(runs(w2.output()), 2u);
 }
 
 }  // namespace

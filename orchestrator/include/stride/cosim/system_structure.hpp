@@ -127,6 +127,10 @@ struct system_structure {
 /// already a component.
 system_structure expand_replicas(const system_structure& system);
 
+/// The system with every component (replica group members included) that names no worker of its
+/// own placed on `worker`: one agent or sweep point on one worker process.
+system_structure on_worker(system_structure system, const std::string& worker);
+
 /// Applies a command-line override "comp.var=value" via system_structure::set.
 /// \throws validation_error if the text has no '=' or names no component.
 void apply_override(system_structure& system, const std::string& assignment);
