@@ -293,10 +293,16 @@ int validate(const validate_arguments& args) {
     // worker to be running
     system_structure local = system;
     for (auto& c : local.components) c.worker.clear();
-    const built_system built = build_system(local, options);
+    for (auto& g : local.groups) {
+      for (auto& c : g.components) c.worker.clear();
+    }
+    temp_dir scratch("stride-validate-");
+    // the placeholders as a run of one substitutes them
+    system_structure substituted = expand_replicas(local);
+    substitute_placeholders(substituted, scratch.path() / "run", {}, single_run_placeholders());
+    const built_system built = build_system(substituted, options);
     // and everything a run checks before its first step: records, start values, initialization
     {
-      temp_dir scratch("stride-validate-");
       run_options dry;
       dry.output_dir = scratch.path() / "run";
       dry.progress = false;

@@ -162,11 +162,14 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
   return resume_uses;
 }
 
+std::map<std::string, std::string> single_run_placeholders() {
+  return {{"agent", "1"}, {"shared_table", ""}};
+}
+
 run_report run_system(system_structure system, const run_options& options) {
   std::map<std::string, std::string> placeholders = options.placeholders;
   const bool as_agent = placeholders.contains("agent");
-  placeholders.try_emplace("agent", "1");
-  placeholders.try_emplace("shared_table", "");
+  placeholders.merge(single_run_placeholders());  // keeps the given ones
   if (system.agents.count > 0 && !as_agent && !options.initialize_only) {
     const std::string where = system.agents.where.str();
     throw validation_error((where.empty() ? "" : where + ": ") + "system '" + system.name +

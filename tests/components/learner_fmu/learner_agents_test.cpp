@@ -135,6 +135,14 @@ TEST(learner_agents, stride_run_with_agents_on_the_command_line) {
   EXPECT_EQ(std::count(table.begin(), table.end(), '\n'), 456);
 }
 
+// `${agent}` and `${shared_table}` are substituted by validate as by a run of one
+TEST(learner_agents, validate_takes_an_experiment_with_agent_placeholders) {
+  temp_dir scratch("stride-agents-");
+  const auto r = test::run_command(
+      std::string(STRIDE_CLI) + " validate " + test::quoted(k_demo) + " --quiet", scratch.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 // SIGKILL in the middle of a synchronous run of 2 agents, wherever it then is; `stride run
 // --resume` continues every agent from its last checkpoint and the table from its journal: the
 // result is byte for byte the uninterrupted run's

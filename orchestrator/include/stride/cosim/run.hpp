@@ -56,6 +56,10 @@ std::size_t substitute_placeholders(system_structure& system,
                                     const std::filesystem::path& resume_dir,
                                     const std::map<std::string, std::string>& more = {});
 
+/// `${agent}` = "1" and `${shared_table}` = "": the placeholders of a run that is not one of
+/// several agents (run_system adds them unless run_options::placeholders has them).
+std::map<std::string, std::string> single_run_placeholders();
+
 /// What a run produced.
 struct run_report {
   /// The system as run: overrides applied, replica groups expanded, placeholders substituted.
