@@ -162,6 +162,14 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
   return resume_uses;
 }
 
+void check_output_folder_free(const fs::path& dir) {
+  if (fs::exists(dir / "system.xml")) {
+    throw validation_error("output folder " + dir.string() +
+                           " holds an earlier run (its system.xml): choose another --output, "
+                           "remove it, or continue it with --resume");
+  }
+}
+
 std::map<std::string, std::string> single_run_placeholders() {
   return {{"agent", "1"}, {"shared_table", ""}};
 }
@@ -193,6 +201,7 @@ run_report run_system(system_structure system, const run_options& options) {
   } else {
     report.output_dir =
         options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
+    if (!options.initialize_only) check_output_folder_free(report.output_dir);
   }
   // system.xml keeps the placeholders (as_written above), so it can be run (resumed) again
   const std::size_t resume_uses = substitute_placeholders(

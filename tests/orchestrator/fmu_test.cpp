@@ -558,6 +558,29 @@ TEST_F(cosim_fmu_test, start_values_outside_the_declared_range_are_refused_by_na
   EXPECT_NO_THROW(run_system(parse_system_file(k_data / "stride_test_pair.xml"), o));
 }
 
+TEST_F(cosim_fmu_test, an_earlier_run_is_not_overwritten) {
+  auto o = options("twice");
+  run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+  const std::string first = read_text(o.output_dir / "manifest.json");
+  try {
+    run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("holds an earlier run (its system.xml)"));
+  }
+  EXPECT_EQ(read_text(o.output_dir / "manifest.json"), first);
+  agents_options a;
+  a.count = 2;
+  EXPECT_THROW(run_agents(parse_system_file(k_data / "stride_test_pair.xml"), o, a),
+               validation_error);
+  EXPECT_FALSE(fs::exists(o.output_dir / "agent1"));
+  // a folder without a run is fine
+  auto fresh = options("fresh");
+  fs::create_directories(fresh.output_dir);
+  std::ofstream(fresh.output_dir / "notes.txt") << "mine\n";
+  EXPECT_NO_THROW(run_system(parse_system_file(k_data / "stride_test_pair.xml"), fresh));
+}
+
 TEST_F(cosim_fmu_test, a_system_with_agents_is_not_run_as_one) {
   system_structure s = parse_system_file(k_data / "stride_test_pair.xml");
   s.agents.count = 2;

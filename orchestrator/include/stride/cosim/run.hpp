@@ -77,16 +77,20 @@ struct run_report {
 /// that an interrupted run's results stay as they are when it is resumed.
 std::string fresh_results_name(const std::filesystem::path& dir, const std::string& name);
 
+/// \throws validation_error when `dir` holds an earlier run (its system.xml, which every run
+/// writes first): a new run there would overwrite it without a word.
+void check_output_folder_free(const std::filesystem::path& dir);
+
 /// The default output folder name for a system, relative to the working directory.
 std::filesystem::path default_output_dir(const system_structure& system);
 
 /// A system with <agents> is run by run_agents (one call of this per agent); here it is an
 /// error, except for `initialize_only` (one agent is checked).
 /// Applies overrides, expands replica groups, substitutes placeholders, builds, creates the
-/// output folder, writes `system.xml` (with overrides; groups and placeholders kept), records,
-/// runs and writes `manifest.json` (with every parameter value the system sets). On a run-time
-/// error the results so far and a manifest with "status": "error" are written and the error is
-/// rethrown.
+/// output folder (refused when it holds an earlier run, except to resume it), writes `system.xml`
+/// (with overrides; groups and placeholders kept), records, runs and writes `manifest.json` (with
+/// every parameter value the system sets). On a run-time error the results so far and a manifest
+/// with "status": "error" are written and the error is rethrown.
 run_report run_system(system_structure system, const run_options& options);
 
 }  // namespace stride::cosim
