@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "stop_signals.hpp"
+#include "stride/common/text.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
@@ -39,55 +40,6 @@ std::string label_of(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.12g", v);  // 450 + 2 * 0.1 prints as 450.2, not ...0001
   return buf;
-}
-
-std::string csv_number(double v) {
-  if (std::isnan(v)) return "nan";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest text that reads back equal
-  return std::string(buf, r.ptr);
-}
-
-bool parse_double(std::string_view text, double& out) {
-  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.remove_suffix(1);
-  if (text.empty()) return false;
-  if (text.front() == '+') text.remove_prefix(1);
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
-  return r.ec == std::errc() && r.ptr == text.data() + text.size();
-}
-
-std::vector<std::string> split(std::string_view text, char sep) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (;;) {
-    const auto pos = text.find(sep, start);
-    parts.emplace_back(text.substr(start, pos == std::string_view::npos ? pos : pos - start));
-    if (pos == std::string_view::npos) return parts;
-    start = pos + 1;
-  }
-}
-
-// CSV fields of one line; double quotes group a field ("" is a quote)
-std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '"') {
-      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else {
-        quoted = !quoted;
-      }
-    } else if (c == ',' && !quoted) {
-      fields.emplace_back();
-    } else if (c != '\r' || quoted) {
-      fields.back() += c;
-    }
-  }
-  return fields;
 }
 
 std::string read_text(const fs::path& file) {
@@ -163,7 +115,7 @@ column_reader file_column(const std::string& spec) {
             std::istringstream in(read_text(path));
             std::string line;
             if (!std::getline(in, line)) throw cosim::error(path.string() + ": empty file");
-            const auto header = csv_fields(line);
+            const auto header = text::csv_fields(line);
             const auto it = std::find(header.begin(), header.end(), column);
             if (it == header.end()) {
               throw cosim::error(path.string() + ": no column '" + column + "'");
@@ -172,13 +124,14 @@ column_reader file_column(const std::string& spec) {
             std::vector<double> values;
             for (int line_no = 2; std::getline(in, line); ++line_no) {
               if (line.empty() || line == "\r") continue;
-              const auto fields = csv_fields(line);
-              double v = 0;
-              if (index >= fields.size() || !parse_double(fields[index], v)) {
+              const auto fields = text::csv_fields(line);
+              const auto v =
+                  index < fields.size() ? text::parse_double(fields[index]) : std::nullopt;
+              if (!v) {
                 throw cosim::error(path.string() + ":" + std::to_string(line_no) + ": column '" +
                                    column + "' is not a number");
               }
-              values.push_back(v);
+              values.push_back(*v);
             }
             if (reduce == "count") return static_cast<double>(values.size());
             if (values.empty()) throw cosim::error(path.string() + ": no data rows");
@@ -216,11 +169,9 @@ std::string point_status(const fs::path& dir) {
 column_reader manifest_column(const std::string& key) {
   return {key, [key](const fs::path& dir) {
             const fs::path file = dir / "manifest.json";
-            double v = 0;
-            if (!parse_double(manifest_value(read_text(file), key), v)) {
-              throw cosim::error(file.string() + ": no number '" + key + "'");
-            }
-            return v;
+            const auto v = text::parse_double(manifest_value(read_text(file), key));
+            if (!v) throw cosim::error(file.string() + ": no number '" + key + "'");
+            return *v;
           }};
 }
 
@@ -315,11 +266,11 @@ void check_settings(const fs::path& dir, const std::string& settings) {
   if (!fs::exists(file)) return;
   const std::string before = read_text(file);
   if (before == settings) return;
-  const auto old_lines = split(before, '\n'), new_lines = split(settings, '\n');
+  const auto old_lines = text::split(before, '\n'), new_lines = text::split(settings, '\n');
   std::size_t i = 0;
   while (i < old_lines.size() && i < new_lines.size() && old_lines[i] == new_lines[i]) ++i;
-  const std::string was = i < old_lines.size() ? old_lines[i] : "(nothing)";
-  const std::string now = i < new_lines.size() ? new_lines[i] : "(nothing)";
+  const std::string was = i < old_lines.size() ? std::string(old_lines[i]) : "(nothing)";
+  const std::string now = i < new_lines.size() ? std::string(new_lines[i]) : "(nothing)";
   throw validation_error("--output " + dir.string() + " holds a sweep with other settings (" +
                          file.string() + ": '" + was + "'; now '" + now +
                          "'): give another --output, or remove the folder");
@@ -338,23 +289,25 @@ sweep_target parse_sweep_grid(std::string_view text) {
     throw validation_error(quoted + ": expected comp.var=name:min:max:step[,name:min:max:step...]");
   }
   t.axes_text = std::string(text.substr(eq + 1));
-  const auto items = split(t.axes_text, ',');
-  for (const auto& item : items) {
-    auto parts = split(item, ':');
-    double number = 0;
-    if (parts.size() == 3 && items.size() == 1 && parse_double(parts[0], number)) {
+  const auto items = text::split(t.axes_text, ',');
+  for (const std::string_view item_text : items) {
+    const std::string item(item_text);
+    const auto fields = text::split(item, ':');
+    std::vector<std::string> parts(fields.begin(), fields.end());
+    if (parts.size() == 3 && items.size() == 1 && text::parse_double(parts[0])) {
       parts.insert(parts.begin(), t.variable.substr(dot + 1));
     }
     if (parts.size() != 4 || parts[0].empty()) {
       throw validation_error(quoted + ": '" + item + "' is not name:min:max:step" +
                              (items.size() == 1 ? " (or min:max:step)" : ""));
     }
-    double lo = 0, hi = 0, step = 0;
-    if (!parse_double(parts[1], lo) || !parse_double(parts[2], hi) ||
-        !parse_double(parts[3], step) || !std::isfinite(lo) || !std::isfinite(hi) ||
-        !std::isfinite(step)) {
+    const auto lo_text = text::parse_double(parts[1]), hi_text = text::parse_double(parts[2]),
+               step_text = text::parse_double(parts[3]);
+    if (!lo_text || !hi_text || !step_text || !std::isfinite(*lo_text) ||
+        !std::isfinite(*hi_text) || !std::isfinite(*step_text)) {
       throw validation_error(quoted + ": '" + item + "': min, max and step must be numbers");
     }
+    const double lo = *lo_text, hi = *hi_text, step = *step_text;
     if (step <= 0 || hi < lo) {
       throw validation_error(quoted + ": '" + item + "': need step > 0 and max >= min");
     }
@@ -672,7 +625,7 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
     for (const auto& r : table.rows) {
       std::string line;
       for (const auto& l : r.labels) line += (line.empty() ? "" : ",") + l;
-      for (double v : r.values) line += "," + csv_number(v);
+      for (double v : r.values) line += "," + text::format_double(v);
       text += line + "\n";
     }
     write_text_atomically(csv, text);

@@ -5,37 +5,13 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "stride/common/text.hpp"
+
 namespace stride::suite {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// one CSV line into fields; "..." quotes a field, "" inside it is a quote
-std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else if (c != '\r') {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
 
 std::optional<double> number(const std::string& text) {
   double v = 0;
@@ -60,7 +36,7 @@ recorded_signals read_recorded_signals(const fs::path& file) {
   r.file = file;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(file.string() + ": empty");
-  const auto header = split_fields(line);
+  const auto header = text::csv_fields(line);
   if (header.empty() || header[0] != "time") {
     throw std::runtime_error(file.string() + ":1: the first column must be 'time'");
   }
@@ -69,7 +45,7 @@ recorded_signals read_recorded_signals(const fs::path& file) {
   r.is_text.assign(r.names.size(), false);
   for (int line_no = 2; std::getline(in, line); ++line_no) {
     if (line.empty() || line == "\r") continue;
-    const auto fields = split_fields(line);
+    const auto fields = text::csv_fields(line);
     const std::string where = file.string() + ":" + std::to_string(line_no) + ": ";
     if (fields.size() != header.size()) {
       throw std::runtime_error(where + std::to_string(fields.size()) + " fields, the header has " +

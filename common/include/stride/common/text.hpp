@@ -52,6 +52,29 @@ inline std::vector<std::string_view> split(std::string_view s, char sep) {
   }
 }
 
+/// The fields of one CSV line: `"` groups a field (`""` inside it is a quote), a carriage
+/// return outside quotes is dropped.
+inline std::vector<std::string> csv_fields(std::string_view line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"') {
+      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else {
+        quoted = !quoted;
+      }
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else if (c != '\r' || quoted) {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
 /// A whole (trimmed) string as a decimal double ('+' accepted); nullopt otherwise.
 inline std::optional<double> parse_double(std::string_view s) {
   s = trim(s);
