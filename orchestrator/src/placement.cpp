@@ -30,6 +30,7 @@ std::shared_ptr<fmu> shared_import(const fs::path& file, const fmu_import_option
                           std::to_string(options.limits.max_entries);
   std::lock_guard lock(mutex);
   if (auto f = imported[key].lock()) return f;
+  std::erase_if(imported, [](const auto& entry) { return entry.second.expired(); });
   auto f = fmu::load(file, options);
   imported[key] = f;
   return f;
