@@ -7,6 +7,7 @@
 
 #include "calibrate.hpp"
 #include "commands.hpp"
+#include "installed_files.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/study/run_hooks.hpp"
@@ -27,7 +28,10 @@ int main(int argc, char** argv) {
       "run",
       "Run a system (no SYSTEM.xml: the built-in demo, Experiment 1 of the gait-parameter "
       "learner at demo scale, models/experiments/demo.xml)");
-  run->add_option("system", system_file, "System XML file")->check(CLI::ExistingFile);
+  run->add_option("system", system_file,
+                  "System XML file (a relative name not found here is looked up in the installed "
+                  "models, share/stride/models)")
+      ->transform(stride::cli::existing_or_installed_model());
   run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
   run->add_option("--output,-o", run_args.output,
                   "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>)");
@@ -98,7 +102,7 @@ int main(int argc, char** argv) {
       "build, validate; nothing is run)");
   validate->add_option("file", validate_file, "FMU or system XML file")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->transform(stride::cli::existing_or_installed_model());
   validate->add_option("--stop-time", validate_stop, "Stop time in seconds for a system");
   validate->add_option("--set", validate_args.sets, "comp.var=value, as for run")
       ->allow_extra_args(false);

@@ -1,7 +1,8 @@
 # stride_add_fmu(NAME [IDENTIFIER id] SOURCES src... [LIBS lib...] [RESOURCES file...]
-#                [BUNDLE_DEPENDENCIES])
+#                [OUTPUT_DIR dir] [BUNDLE_DEPENDENCIES] [INSTALL])
 #
-# Packages a component as an FMI 2.0 Co-Simulation FMU `${STRIDE_FMU_OUTPUT_DIR}/<NAME>.fmu`:
+# Packages a component as an FMI 2.0 Co-Simulation FMU `<dir>/<NAME>.fmu`, where dir is
+# OUTPUT_DIR, else STRIDE_FMU_OUTPUT_DIR, else `${CMAKE_BINARY_DIR}/fmus`:
 #  - the component sources (with STRIDE_FMU(model) in one of them) are compiled once, with hidden
 #    visibility, and linked both into the FMU's shared library and into a generator executable
 #    that writes modelDescription.xml at build time from the component's variable table;
@@ -9,29 +10,55 @@
 #    script), carries libstdc++/libgcc statically and has RPATH=$ORIGIN;
 #  - with BUNDLE_DEPENDENCIES, every shared library it needs beyond the C runtime (libstdc++
 #    included, which then is not linked statically) is copied next to it with RPATH=$ORIGIN, so
-#    the FMU runs on a machine without our Debian packages;
-#  - RESOURCES land in `resources/`.
+#    the FMU runs on a machine without our Debian packages (needs patchelf);
+#  - RESOURCES land in `resources/`;
+#  - with INSTALL, `cmake --install` puts the archive into `share/stride/fmus`, where an installed
+#    `stride` finds it by name.
+# The same file serves the source tree and an installed Stride (find_package(Stride)): it needs
+# only the targets Stride::sdk, Stride::sdk_glue and Stride::sdk_generator.
 # Targets: <NAME>_fmu (the .so), <NAME>_fmu_model (objects), <NAME>_model_description
 # (generator), <NAME>_fmu_package (the archive). NAME is appended to the global property
 # STRIDE_FMU_NAMES, which the FMU conformance tests iterate.
+include(GNUInstallDirs)
 set_property(GLOBAL PROPERTY STRIDE_FMU_NAMES "")
 set(STRIDE_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}" CACHE INTERNAL "")
 
 function(stride_add_fmu name)
-  cmake_parse_arguments(arg "BUNDLE_DEPENDENCIES" "IDENTIFIER" "SOURCES;LIBS;RESOURCES" ${ARGN})
+  cmake_parse_arguments(arg "BUNDLE_DEPENDENCIES;INSTALL" "IDENTIFIER;OUTPUT_DIR"
+                        "SOURCES;LIBS;RESOURCES" ${ARGN})
+  if(arg_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "stride_add_fmu(${name}): unknown arguments ${arg_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT arg_SOURCES)
+    message(FATAL_ERROR "stride_add_fmu(${name}): SOURCES is required")
+  endif()
   if(NOT arg_IDENTIFIER)
     set(arg_IDENTIFIER ${name})
   endif()
+  if(NOT arg_IDENTIFIER MATCHES "^[A-Za-z_][A-Za-z0-9_]*$")
+    message(FATAL_ERROR "stride_add_fmu(${name}): the model identifier '${arg_IDENTIFIER}' must be "
+                        "a C identifier (it names the binary and prefixes its functions)")
+  endif()
+  set(output_dir "${arg_OUTPUT_DIR}")
+  if(NOT output_dir)
+    set(output_dir "${STRIDE_FMU_OUTPUT_DIR}")
+  endif()
+  if(NOT output_dir)
+    set(output_dir "${CMAKE_BINARY_DIR}/fmus")
+  endif()
   set(staging "${CMAKE_CURRENT_BINARY_DIR}/${name}.fmu.d")
-  set(archive "${STRIDE_FMU_OUTPUT_DIR}/${name}.fmu")
+  set(archive "${output_dir}/${name}.fmu")
 
   add_library(${name}_fmu_model OBJECT ${arg_SOURCES})
-  target_link_libraries(${name}_fmu_model PUBLIC stride::sdk ${arg_LIBS})
+  target_link_libraries(${name}_fmu_model PUBLIC Stride::sdk ${arg_LIBS})
   set_target_properties(${name}_fmu_model PROPERTIES CXX_VISIBILITY_PRESET hidden
-                                                     VISIBILITY_INLINES_HIDDEN ON)
-  stride_set_warnings(${name}_fmu_model)
+                                                     VISIBILITY_INLINES_HIDDEN ON
+                                                     POSITION_INDEPENDENT_CODE ON)
+  if(COMMAND stride_set_warnings)
+    stride_set_warnings(${name}_fmu_model)
+  endif()
 
-  add_library(${name}_fmu SHARED $<TARGET_OBJECTS:stride_sdk_glue>)
+  add_library(${name}_fmu SHARED $<TARGET_OBJECTS:Stride::sdk_glue>)
   target_link_libraries(${name}_fmu PRIVATE ${name}_fmu_model)
   set_target_properties(${name}_fmu PROPERTIES
     OUTPUT_NAME ${arg_IDENTIFIER}
@@ -50,7 +77,7 @@ function(stride_add_fmu name)
     -Wl,--no-undefined
     -Wl,--disable-new-dtags)  # DT_RPATH, so bundled libraries find each other too
 
-  add_executable(${name}_model_description "${STRIDE_SDK_DIR}/src/model_description_main.cpp")
+  add_executable(${name}_model_description $<TARGET_OBJECTS:Stride::sdk_generator>)
   target_link_libraries(${name}_model_description PRIVATE ${name}_fmu_model)
 
   set(copy_resources "")
@@ -67,7 +94,7 @@ function(stride_add_fmu name)
   add_custom_command(
     OUTPUT "${archive}"
     COMMAND ${CMAKE_COMMAND} -E rm -rf "${staging}/resources"
-    COMMAND ${CMAKE_COMMAND} -E make_directory "${staging}/resources" "${STRIDE_FMU_OUTPUT_DIR}"
+    COMMAND ${CMAKE_COMMAND} -E make_directory "${staging}/resources" "${output_dir}"
     COMMAND $<TARGET_FILE:${name}_model_description> "${staging}/modelDescription.xml"
     ${copy_resources}
     ${bundle}
@@ -79,5 +106,8 @@ function(stride_add_fmu name)
     COMMENT "Packaging ${name}.fmu"
     VERBATIM)
   add_custom_target(${name}_fmu_package ALL DEPENDS "${archive}")
+  if(arg_INSTALL)
+    install(FILES "${archive}" DESTINATION "${CMAKE_INSTALL_DATADIR}/stride/fmus")
+  endif()
   set_property(GLOBAL APPEND PROPERTY STRIDE_FMU_NAMES ${name})
 endfunction()

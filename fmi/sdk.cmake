@@ -1,6 +1,6 @@
-# The component SDK: the variable table, modelDescription generation and the FMI glue.
-set(STRIDE_SDK_DIR "${CMAKE_CURRENT_SOURCE_DIR}" CACHE INTERNAL "")
-
+# The component SDK: the variable table, modelDescription generation and the FMI glue. Installed
+# and exported (see cmake/StrideInstall.cmake) as Stride::sdk, Stride::sdk_glue and
+# Stride::sdk_generator, so components build against an installed Stride exactly as in-tree.
 add_library(stride_sdk STATIC
   src/types.cpp
   src/variable_table.cpp
@@ -10,11 +10,18 @@ add_library(stride_sdk STATIC
   src/lifecycle.cpp
   src/logger.cpp
   src/resources.cpp)
-target_include_directories(stride_sdk PUBLIC include PRIVATE src)
+target_include_directories(stride_sdk
+  PUBLIC "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>" "$<INSTALL_INTERFACE:include>"
+  PRIVATE src)
 target_link_libraries(stride_sdk PUBLIC stride_fmi_api)
-set_target_properties(stride_sdk PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+# the public headers use std::span: whoever includes them compiles as C++20 at least
+target_compile_features(stride_sdk PUBLIC cxx_std_20)
+# components are shared libraries; the SDK goes into them whatever the including project sets
+set_target_properties(stride_sdk PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
+                                            POSITION_INDEPENDENT_CODE ON EXPORT_NAME sdk)
 stride_set_warnings(stride_sdk)
 add_library(stride::sdk ALIAS stride_sdk)
+add_library(Stride::sdk ALIAS stride_sdk)
 
 # The FMI functions; compiled once, linked into every FMU as objects (a static library would
 # drop them, since nothing inside the FMU references them).
@@ -22,5 +29,14 @@ add_library(stride_sdk_glue OBJECT src/glue.cpp)
 target_include_directories(stride_sdk_glue PRIVATE src)
 target_link_libraries(stride_sdk_glue PUBLIC stride_sdk)
 target_compile_definitions(stride_sdk_glue PRIVATE STRIDE_FMI2_BUILDING_FMU)
-set_target_properties(stride_sdk_glue PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+set_target_properties(stride_sdk_glue PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
+                                                 POSITION_INDEPENDENT_CODE ON EXPORT_NAME sdk_glue)
 stride_set_warnings(stride_sdk_glue)
+add_library(Stride::sdk_glue ALIAS stride_sdk_glue)
+
+# main() of the build-time modelDescription.xml generator, linked with each component's objects.
+add_library(stride_sdk_generator OBJECT src/model_description_main.cpp)
+target_link_libraries(stride_sdk_generator PUBLIC stride_sdk)
+set_target_properties(stride_sdk_generator PROPERTIES EXPORT_NAME sdk_generator)
+stride_set_warnings(stride_sdk_generator)
+add_library(Stride::sdk_generator ALIAS stride_sdk_generator)

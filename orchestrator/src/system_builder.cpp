@@ -15,6 +15,14 @@ namespace stride::cosim {
 
 namespace fs = std::filesystem;
 
+fs::path installed_data_dir() {
+  std::error_code error;
+  const fs::path program = fs::read_symlink("/proc/self/exe", error);
+  if (error) return {};
+  const fs::path data = program.parent_path().parent_path() / "share" / "stride";
+  return fs::is_directory(data, error) ? data : fs::path();
+}
+
 std::vector<fs::path> default_fmu_search_path() {
   std::vector<fs::path> paths;
   if (const char* env = std::getenv("STRIDE_FMU_PATH")) {
@@ -27,7 +35,11 @@ std::vector<fs::path> default_fmu_search_path() {
       rest.remove_prefix(colon + 1);
     }
   }
-  if (std::string_view(STRIDE_FMU_OUTPUT_DIR).size() > 0) paths.emplace_back(STRIDE_FMU_OUTPUT_DIR);
+  if (const fs::path installed = installed_data_dir(); !installed.empty()) {
+    paths.push_back(installed / "fmus");
+  } else if (std::string_view(STRIDE_FMU_OUTPUT_DIR).size() > 0) {
+    paths.emplace_back(STRIDE_FMU_OUTPUT_DIR);
+  }
   return paths;
 }
 
@@ -51,7 +63,7 @@ fs::path resolve_fmu(const component_spec& c, const system_structure& system,
     searched += (searched.empty() ? "" : ", ") + dir.string();
   }
   throw validation_error(where + "component '" + c.name + "': bundled FMU '" + c.fmu +
-                         "' not found (searched $STRIDE_FMU_PATH and the build's FMU folder: " +
+                         "' not found (searched $STRIDE_FMU_PATH and the bundled FMU folder: " +
                          (searched.empty() ? "nothing" : searched) + ")");
 }
 

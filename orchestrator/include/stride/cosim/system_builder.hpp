@@ -15,8 +15,13 @@
 
 namespace stride::cosim {
 
+/// The data folder of an installed Stride, `<prefix>/share/stride` for a program running as
+/// `<prefix>/bin/<program>`; empty when the running program is not installed that way.
+std::filesystem::path installed_data_dir();
+
 /// The folders searched for bundled FMUs: each entry of $STRIDE_FMU_PATH (':'-separated), then
-/// the build's FMU folder (STRIDE_FMU_OUTPUT_DIR).
+/// the installed FMU folder (installed_data_dir()/fmus) when there is one, else the build's FMU
+/// folder (STRIDE_FMU_OUTPUT_DIR): an installed program never picks FMUs from a build tree.
 std::vector<std::filesystem::path> default_fmu_search_path();
 
 /// Resolves `component.fmu` to an existing file. \throws validation_error naming the system
