@@ -2,6 +2,7 @@
 #   P/bin/stride, P/bin/stride-fmu-check
 #   P/share/stride/fmus/*.fmu        bundled components (stride_add_fmu(... INSTALL))
 #   P/share/stride/models/           robot models and example systems
+#   P/share/stride/examples/         components built against the package (docs/tutorial.md)
 #   P/include/stride/{sdk,fmi2}/     the component SDK headers
 #   P/lib/libstride_sdk.a, P/lib/stride/objects/  the SDK library and its two object sets
 #   P/lib/cmake/Stride/              StrideConfig.cmake, StrideConfigVersion.cmake, StrideFmu.cmake
@@ -18,6 +19,8 @@ if(TARGET stride-fmu-check)
   install(TARGETS stride-fmu-check RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 endif()
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/models/" DESTINATION "${CMAKE_INSTALL_DATADIR}/stride/models")
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${CMAKE_INSTALL_DATADIR}/stride/examples"
+        PATTERN build EXCLUDE)
 
 install(TARGETS stride_fmi_api stride_sdk stride_sdk_glue stride_sdk_generator
   EXPORT StrideTargets
