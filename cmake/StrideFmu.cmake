@@ -74,8 +74,12 @@ function(stride_add_fmu name)
   target_link_options(${name}_fmu PRIVATE
     -Wl,--exclude-libs,ALL
     -Wl,--version-script=${STRIDE_CMAKE_DIR}/fmu_exports.map
-    -Wl,--no-undefined
     -Wl,--disable-new-dtags)  # DT_RPATH, so bundled libraries find each other too
+  # every symbol resolved inside the FMU, except in sanitizer builds, where the sanitizer
+  # runtime lives in the importing executable
+  if(NOT STRIDE_SANITIZE)
+    target_link_options(${name}_fmu PRIVATE -Wl,--no-undefined)
+  endif()
 
   add_executable(${name}_model_description $<TARGET_OBJECTS:Stride::sdk_generator>)
   target_link_libraries(${name}_model_description PRIVATE ${name}_fmu_model)

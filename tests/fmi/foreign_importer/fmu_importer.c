@@ -4,7 +4,7 @@
  * the specification, so an FMU that only works with Stride's own declarations fails here.
  * Dependencies: libc, libdl (dlopen/dlsym) and libzip's C API (unzipping only).
  *
- * usage: fmu_importer FILE.fmu [--steps N] [--twice] [--no-compare]
+ * usage: fmu_importer FILE.fmu [--steps N] [--twice] [--no-compare] [--misuse]
  *
  * Unzips the FMU into a fresh mkdtemp directory, reads guid, modelIdentifier, the default
  * experiment and the Real outputs from modelDescription.xml by plain string parsing, loads
@@ -16,6 +16,7 @@
  * --twice runs the lifecycle twice in a row (the second time with a trailing '/' on the
  * resource URI, as some importers pass it) and two instances side by side in the same process,
  * comparing all output traces with the first run (--no-compare skips the comparison).
+ * --misuse instead calls functions out of order and with bad arguments (see check_misuse).
  * Everything is freed and the temp directory removed, so valgrind sees no leak of ours.
  * Exit status: 0 on success, 1 on a failed check, 2 on a usage error.
  */
@@ -845,8 +846,155 @@ static int check_unsupported(const run_setup* s, const char* uri) {
   return result;
 }
 
+/* ---- --misuse: calls out of order and bad arguments, one fresh instance per case ----
+ * FMI 2.0 (co-simulation state machine, section 4.2.4) allows each function only in some states;
+ * a call in another state, or with arguments no FMU can accept, must come back as fmi2Error with
+ * a log message and no crash. After fmi2Error only fmi2Reset or fmi2FreeInstance may follow, so
+ * each case then resets the instance and requires one legal lifecycle step to work again. */
+enum misuse_state { at_instantiated, at_initialization, at_step_complete, at_terminated };
+
+typedef struct {
+  const char* what;
+  enum misuse_state state;
+  int action;
+} misuse_case;
+
+enum {
+  misuse_do_step,
+  misuse_exit_initialization,
+  misuse_terminate,
+  misuse_get_real,
+  misuse_enter_initialization,
+  misuse_setup_experiment,
+  misuse_set_output,
+  misuse_null_value_array,
+  misuse_unknown_reference,
+  misuse_negative_step,
+  misuse_nan_time
+};
+
+static const misuse_case k_misuse_cases[] = {
+    {"fmi2DoStep before initialization", at_instantiated, misuse_do_step},
+    {"fmi2ExitInitializationMode before entering it", at_instantiated, misuse_exit_initialization},
+    {"fmi2Terminate before initialization", at_instantiated, misuse_terminate},
+    {"fmi2GetReal before initialization", at_instantiated, misuse_get_real},
+    {"fmi2DoStep in initialization mode", at_initialization, misuse_do_step},
+    {"fmi2EnterInitializationMode twice", at_initialization, misuse_enter_initialization},
+    {"fmi2SetupExperiment in initialization mode", at_initialization, misuse_setup_experiment},
+    {"fmi2EnterInitializationMode after initialization", at_step_complete,
+     misuse_enter_initialization},
+    {"fmi2SetupExperiment after initialization", at_step_complete, misuse_setup_experiment},
+    {"fmi2SetReal on an output", at_step_complete, misuse_set_output},
+    {"fmi2GetReal with a null value array", at_step_complete, misuse_null_value_array},
+    {"fmi2GetReal of an unknown value reference", at_step_complete, misuse_unknown_reference},
+    {"fmi2DoStep with a negative step size", at_step_complete, misuse_negative_step},
+    {"fmi2DoStep at a NaN time", at_step_complete, misuse_nan_time},
+    {"fmi2DoStep after fmi2Terminate", at_terminated, misuse_do_step},
+    {"fmi2Terminate twice", at_terminated, misuse_terminate},
+    {"fmi2EnterInitializationMode after fmi2Terminate", at_terminated, misuse_enter_initialization},
+};
+
+static fmi2Status misuse_call(const run_setup* s, fmi2Component c, int action) {
+  const fmu_functions* f = s->api;
+  fmi2ValueReference vr = s->info->output_count > 0 ? s->info->outputs[0] : 0;
+  fmi2ValueReference unknown = 0x7fffffffu;
+  fmi2Real value = 0.0;
+  switch (action) {
+    case misuse_do_step:
+      return f->fmi2DoStep(c, s->info->start_time, s->info->step_size, fmi2True);
+    case misuse_exit_initialization:
+      return f->fmi2ExitInitializationMode(c);
+    case misuse_terminate:
+      return f->fmi2Terminate(c);
+    case misuse_get_real:
+      return f->fmi2GetReal(c, &vr, 1, &value);
+    case misuse_enter_initialization:
+      return f->fmi2EnterInitializationMode(c);
+    case misuse_setup_experiment:
+      return f->fmi2SetupExperiment(c, fmi2False, 0.0, s->info->start_time, fmi2False, 0.0);
+    case misuse_set_output:
+      return f->fmi2SetReal(c, &vr, 1, &value);
+    case misuse_null_value_array:
+      return f->fmi2GetReal(c, &vr, 1, NULL);
+    case misuse_unknown_reference:
+      return f->fmi2GetReal(c, &unknown, 1, &value);
+    case misuse_negative_step:
+      return f->fmi2DoStep(c, s->info->start_time, -s->info->step_size, fmi2True);
+    case misuse_nan_time:
+      return f->fmi2DoStep(c, NAN, s->info->step_size, fmi2True);
+  }
+  return fmi2OK;
+}
+
+static int reach(const run_setup* s, fmi2Component c, enum misuse_state state) {
+  const char* instance = "misuse";
+  if (state == at_instantiated) return 0;
+  if (state == at_initialization) {
+    return check_status(
+               s->api->fmi2SetupExperiment(c, fmi2False, 0.0, s->info->start_time, fmi2False, 0.0),
+               "fmi2SetupExperiment", instance) ||
+           check_status(s->api->fmi2EnterInitializationMode(c), "fmi2EnterInitializationMode",
+                        instance);
+  }
+  if (initialize(s, c, instance) != 0) return 1;
+  if (state == at_terminated) {
+    return check_status(s->api->fmi2Terminate(c), "fmi2Terminate", instance);
+  }
+  return 0;
+}
+
+static int check_misuse(const run_setup* s, const char* uri) {
+  size_t i;
+  double* outputs = calloc(s->info->output_count > 0 ? s->info->output_count : 1, sizeof(double));
+  if (outputs == NULL) return fail("out of memory");
+  for (i = 0; i < sizeof k_misuse_cases / sizeof k_misuse_cases[0]; ++i) {
+    const misuse_case* m = &k_misuse_cases[i];
+    int logs_before;
+    fmi2Status st;
+    fmi2Component c;
+    /* an output to set needs one; the probes that read use the first Real output */
+    if (s->info->output_count == 0 &&
+        (m->action == misuse_set_output || m->action == misuse_get_real)) {
+      continue;
+    }
+    c = instantiate(s, "misuse", uri);
+    if (c == NULL) {
+      free(outputs);
+      return 1;
+    }
+    if (reach(s, c, m->state) != 0) {
+      s->api->fmi2FreeInstance(c);
+      free(outputs);
+      return fail("misuse case \"%s\": could not reach its state", m->what);
+    }
+    logs_before = g_log_count;
+    st = misuse_call(s, c, m->action);
+    if (st != fmi2Error) {
+      s->api->fmi2FreeInstance(c);
+      free(outputs);
+      return fail("%s returned %s, expected fmi2Error", m->what, status_name(st));
+    }
+    if (g_log_count == logs_before) {
+      s->api->fmi2FreeInstance(c);
+      free(outputs);
+      return fail("%s returned fmi2Error without a log message", m->what);
+    }
+    /* the instance must come back with fmi2Reset and run again */
+    if (check_status(s->api->fmi2Reset(c), "fmi2Reset", "misuse") != 0 ||
+        initialize(s, c, "misuse") != 0 || do_step(s, c, "misuse", 0, outputs) != 0 ||
+        finish(s, c, "misuse") != 0) {
+      free(outputs);
+      return fail("after \"%s\" the instance did not run again after fmi2Reset", m->what);
+    }
+  }
+  free(outputs);
+  printf("fmu_importer: %zu calls out of order or with bad arguments returned fmi2Error\n",
+         sizeof k_misuse_cases / sizeof k_misuse_cases[0]);
+  return 0;
+}
+
 static int usage(void) {
-  fprintf(stderr, "usage: fmu_importer FILE.fmu [--steps N] [--twice] [--no-compare]\n");
+  fprintf(stderr, "usage: fmu_importer FILE.fmu [--steps N] [--twice] [--no-compare] [--misuse]\n");
   return 2;
 }
 
@@ -855,6 +1003,7 @@ int main(int argc, char** argv) {
   int steps = 100;
   int twice = 0;
   int compare = 1;
+  int misuse = 0;
   int i;
   int result = 1;
   char dir[PATH_MAX] = "";
@@ -877,6 +1026,8 @@ int main(int argc, char** argv) {
       twice = 1;
     } else if (strcmp(argv[i], "--no-compare") == 0) {
       compare = 0;
+    } else if (strcmp(argv[i], "--misuse") == 0) {
+      misuse = 1;
     } else if (strcmp(argv[i], "--steps") == 0 && i + 1 < argc) {
       char* stop = NULL;
       long n = strtol(argv[++i], &stop, 10);
@@ -949,6 +1100,13 @@ int main(int argc, char** argv) {
   setup.callbacks = &callbacks;
   setup.steps = steps;
 
+  if (misuse) {
+    if (check_misuse(&setup, uri) == 0) {
+      result = 0;
+      printf("fmu_importer: OK %s\n", fmu);
+    }
+    goto cleanup;
+  }
   if (run_lifecycle(&setup, "run_1", uri, traces[0]) != 0) goto cleanup;
   printf("fmu_importer: lifecycle 1 passed (%d steps)\n", steps);
   if (check_wrong_guid(&setup, uri) != 0) goto cleanup;
