@@ -112,6 +112,41 @@ class system_reader {
 
   source_location at(const tinyxml2::XMLElement* e) const { return {file_, e->GetLineNum()}; }
 
+  // The children of an element come in a fixed order (as the XSD says): each known tag has a
+  // rank, and a child may not follow one of a higher rank. Unknown tags are left to the caller.
+  class child_order {
+   public:
+    child_order(std::string parent, std::initializer_list<std::pair<std::string_view, int>> ranks,
+                std::string expected)
+        : parent_(std::move(parent)), ranks_(ranks), expected_(std::move(expected)) {}
+
+    void check(const tinyxml2::XMLElement* e, const system_reader& reader) {
+      const std::string_view tag = e->Name();
+      const auto known =
+          std::find_if(ranks_.begin(), ranks_.end(), [&](const auto& r) { return r.first == tag; });
+      if (known == ranks_.end()) return;
+      if (known->second < highest_) {
+        reader.fail(e->GetLineNum(), "<" + std::string(tag) + "> after <" + highest_tag_ +
+                                         "> (line " + std::to_string(highest_line_) +
+                                         "): the children of " + parent_ + " come in the order " +
+                                         expected_);
+      }
+      if (known->second > highest_) {
+        highest_ = known->second;
+        highest_tag_ = std::string(tag);
+        highest_line_ = e->GetLineNum();
+      }
+    }
+
+   private:
+    std::string parent_;
+    std::vector<std::pair<std::string_view, int>> ranks_;
+    std::string expected_;
+    int highest_ = -1;
+    std::string highest_tag_;
+    int highest_line_ = 0;
+  };
+
   // rejects attributes that are not in `allowed` (typos should not pass silently)
   void check_attributes(const tinyxml2::XMLElement* e,
                         std::initializer_list<std::string_view> allowed) const {
@@ -181,8 +216,17 @@ class system_reader {
     bool seen_simulation = false;
     bool seen_record = false;
     bool seen_agents = false;
+    child_order order("<system>",
+                      {{"simulation", 0},
+                       {"agents", 1},
+                       {"component", 2},
+                       {"replicate", 2},
+                       {"connection", 3},
+                       {"record", 4}},
+                      "simulation, agents, component and replicate, connection, record");
     for (auto* e = root->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
       const std::string_view tag = e->Name();
+      order.check(e, *this);
       if (tag == "simulation") {
         if (seen_simulation) fail(e->GetLineNum(), "more than one <simulation>");
         seen_simulation = true;
@@ -281,8 +325,11 @@ class system_reader {
              "duplicate group name \"" + g.name + "\" (first at " + other.where.str() + ")");
       }
     }
+    child_order order("<replicate>", {{"component", 0}, {"connection", 1}},
+                      "component, connection");
     for (auto* c = e->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
       const std::string_view tag = c->Name();
+      order.check(c, *this);
       if (tag == "component") {
         read_component(c, g.components);
       } else if (tag == "connection") {

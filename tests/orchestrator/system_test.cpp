@@ -138,10 +138,33 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
             "t/test.xml:2: not UTF-8 text (XML's encoding); save the file as UTF-8");
   EXPECT_EQ(error_of("<system>\n\n<component name='\xc0\xaf' fmu='m'/>\n</system>"),  // overlong
             "t/test.xml:3: not UTF-8 text (XML's encoding); save the file as UTF-8");
-  EXPECT_EQ(error_of("<system name='gr\xc3\xbc\xc3\x9f'>\n<component name='a' fmu='m'/>\n"
-                     "<simulation stop='1' step='1'/>\n</system>")
-                .find("not UTF-8"),
-            std::string::npos);  // ü and ß are fine
+  EXPECT_EQ(error_of("<system name='gr\xc3\xbc\xc3\x9f'>\n<simulation stop='1' step='1'/>\n"
+                     "<component name='a' fmu='m'/>\n</system>"),
+            "no error");  // ü and ß are fine
+  // children in the documented (and XSD) order
+  EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<simulation stop='1'/>\n</system>"),
+            "t/test.xml:3: <simulation> after <component> (line 2): the children of <system> come "
+            "in the order simulation, agents, component and replicate, connection, record");
+  EXPECT_EQ(error_of("<system>\n<agents count='2'/>\n<simulation stop='1'/>\n"
+                     "<component name='a' fmu='m'/>\n</system>"),
+            "t/test.xml:3: <simulation> after <agents> (line 2): the children of <system> come "
+            "in the order simulation, agents, component and replicate, connection, record");
+  EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<record/>\n"
+                     "<connection from='a.y' to='a.u'/>\n</system>"),
+            "t/test.xml:4: <connection> after <record> (line 3): the children of <system> come "
+            "in the order simulation, agents, component and replicate, connection, record");
+  EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<connection from='a.y' to='a.u'/>\n"
+                     "<component name='b' fmu='m'/>\n</system>"),
+            "t/test.xml:4: <component> after <connection> (line 3): the children of <system> "
+            "come in the order simulation, agents, component and replicate, connection, record");
+  EXPECT_EQ(error_of("<system>\n<replicate name='g' count='2'>\n<connection from='a.y' "
+                     "to='a.u'/>\n<component name='a' fmu='m'/>\n</replicate>\n</system>"),
+            "t/test.xml:4: <component> after <connection> (line 3): the children of <replicate> "
+            "come in the order component, connection");
+  // components and replica groups mix freely
+  EXPECT_EQ(error_of("<system>\n<replicate name='g' count='2'>\n<component name='a' fmu='m'/>\n"
+                     "</replicate>\n<component name='b' fmu='m'/>\n</system>"),
+            "no error");
   // the run's own files are not a record file
   for (const std::string file : {"manifest.json", "./system.xml"}) {
     EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<record file='" + file +

@@ -40,9 +40,11 @@ class remote_agents : public ::testing::Test {
   // the demo with <agents>, `attrs` added to it
   fs::path demo_with_agents(const std::string& attrs) {
     std::string xml = read(k_demo);
-    const auto at = xml.find("<simulation ");
-    EXPECT_NE(at, std::string::npos);
-    xml.insert(at, "<agents " + attrs + "/>\n  ");
+    // <agents> follows <simulation>
+    const auto simulation = xml.find("<simulation ");
+    EXPECT_NE(simulation, std::string::npos);
+    const auto at = xml.find("/>", simulation) + 2;
+    xml.insert(at, "\n  <agents " + attrs + "/>");
     const fs::path f = scratch.path() / "agents.xml";
     std::ofstream(f, std::ios::binary) << xml;
     return f;
