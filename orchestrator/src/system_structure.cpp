@@ -86,6 +86,11 @@ void system_structure::set(const std::string& full_name, std::string value, sour
 }
 
 void apply_override(system_structure& system, const std::string& assignment) {
+  // the value goes into system.xml and manifest.json, which are UTF-8
+  if (detail::first_line_not_utf8(assignment) > 0 || assignment.find('\n') != std::string::npos) {
+    throw validation_error("--set: \"" + detail::printable(assignment) +
+                           "\" is not one line of UTF-8 text");
+  }
   const auto eq = assignment.find('=');
   if (eq == std::string::npos) {
     throw validation_error("--set '" + assignment + "': expected component.variable=value");

@@ -10,6 +10,24 @@
 
 namespace stride::cosim::detail {
 
+/// `text` with every byte outside printable ASCII written as \xHH, for error messages about
+/// text that cannot be shown as it is.
+inline std::string printable(std::string_view text) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : text) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (b >= 0x20 && b < 0x7f) {
+      out += ch;
+    } else {
+      out += "\\x";
+      out += hex[b >> 4];
+      out += hex[b & 15];
+    }
+  }
+  return out;
+}
+
 /// The 1-based line of the first byte of `text` that is not part of well-formed UTF-8 (XML's
 /// default encoding), or 0 when all of it is. Overlong forms, surrogates and code points above
 /// U+10FFFF are not well formed.

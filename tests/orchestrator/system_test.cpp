@@ -397,6 +397,18 @@ TEST(cosim_system_api, builds_the_same_system_as_the_xml) {
   EXPECT_EQ(s.components[1].parameters[0].value, "4");
   EXPECT_THROW(apply_override(s, "amp.gain"), validation_error);
   EXPECT_THROW(apply_override(s, "nobody.gain=1"), validation_error);
+  // values end up in system.xml and manifest.json: one line of UTF-8, or refused by name
+  for (const std::string bad : {"amp.label=\xff\xfe", "amp.label=a\nb", "amp.label=\xc0\xaf"}) {
+    try {
+      apply_override(s, bad);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const validation_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr("is not one line of UTF-8 text"));
+      EXPECT_THAT(e.what(), HasSubstr("amp.label="));
+    }
+  }
+  apply_override(s, "amp.gain=4");  // the refused ones changed nothing
+  EXPECT_EQ(s.components[1].parameters.size(), 1u);
   auto built = build_system(s, mock_options());
   auto& algo = *built.execution;
   const auto y = algo.observe({1, *algo.component_at(1).model_description().index_of("y")});
