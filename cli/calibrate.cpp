@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "stride/calibration/calibrate.hpp"
+#include "stride/common/files.hpp"
 #include "stride/cosim/log.hpp"
 #include "stride/cosim/system_structure.hpp"
 #include "stride/gait/config_ini.hpp"
@@ -99,11 +100,7 @@ int calibrate(const calibrate_arguments& a) {
   cal::write_fitted_config(a.config, a.output, report);
 
   const std::string text = cal::format_report(report) + "\nwritten: " + a.output + "\n";
-  if (!a.report.empty()) {
-    std::ofstream out(a.report, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error(a.report + ": cannot write the report");
-  }
+  if (!a.report.empty()) common::write_file_atomically(a.report, text);
   if (a.quiet) {
     for (const std::string& w : report.warnings)
       std::fprintf(stderr, "stride: warning: %s\n", w.c_str());

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "stop_signals.hpp"
+#include "stride/common/files.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/archive.hpp"
@@ -48,16 +49,6 @@ std::string read_text(const fs::path& file) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-void write_text_atomically(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw cosim::error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
 }
 
 std::string duration_text(double seconds) {
@@ -500,7 +491,7 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
   }
 
   fs::create_directories(points_dir);
-  write_text_atomically(dir / k_settings_file, settings);
+  common::write_file_atomically(dir / k_settings_file, settings);
 
   progress_line progress(points.size(), points.size() - to_run.size(), to_run.size(), args.quiet);
   std::atomic<std::size_t> next{0};
@@ -628,7 +619,7 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
       for (double v : r.values) line += "," + text::format_double(v);
       text += line + "\n";
     }
-    write_text_atomically(csv, text);
+    common::write_file_atomically(csv, text);
   }
   const auto count = [&](point_status_kind k) {
     return static_cast<std::size_t>(std::count_if(outcomes.begin(), outcomes.end(),

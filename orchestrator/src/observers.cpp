@@ -94,7 +94,10 @@ std::shared_ptr<csv_recorder> csv_recorder::from_patterns(std::filesystem::path 
 }
 
 csv_recorder::~csv_recorder() {
-  flush();
+  // an unwinding run: keep what can be kept, the error that ends the run is already on its way
+  if (out_ == nullptr) return;
+  if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+  std::fclose(out_);
 }
 
 void csv_recorder::attach(execution& ex) {
@@ -165,11 +168,15 @@ void csv_recorder::write_row(const execution& ex, time_point t) {
   if (buffer_.size() > (1u << 16)) flush();
 }
 
-void csv_recorder::flush() noexcept {
+void csv_recorder::flush() {
   if (out_ == nullptr) return;
-  if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+  // a full disk must end the run with an error, not leave a silently truncated file
+  const bool written =
+      buffer_.empty() || std::fwrite(buffer_.data(), 1, buffer_.size(), out_) == buffer_.size();
   buffer_.clear();
-  std::fflush(out_);
+  if (!written || std::fflush(out_) != 0) {
+    throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+  }
 }
 
 void csv_recorder::simulation_initialized(const execution& ex, time_point t) {
@@ -185,8 +192,9 @@ void csv_recorder::simulation_ended(const execution& /*ex*/, time_point /*t*/,
                                     const std::string& /*error*/) {
   flush();
   if (out_ != nullptr) {
-    std::fclose(out_);
+    const bool closed = std::fclose(out_) == 0;
     out_ = nullptr;
+    if (!closed) throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
   }
 }
 

@@ -276,7 +276,12 @@ run_report run_system(system_structure system, const run_options& options) {
     report.result.end_time = ex.current_time();
     report.result.steps = ex.step_count();
     finish_report();
-    write_file(report.manifest_file, manifest_json(m));
+    try {
+      write_file(report.manifest_file, manifest_json(m));
+    } catch (const std::exception& manifest_failure) {
+      // e.g. a full disk: the first error is the one to report
+      throw error(report.error + " (" + manifest_failure.what() + ")");
+    }
     throw;
   }
   finish_report();

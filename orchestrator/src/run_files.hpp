@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "stride/common/files.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim {
@@ -61,10 +62,13 @@ inline std::string utc_now() {
   return buf;
 }
 
+/// Writes a whole file atomically (see common::write_file_atomically). \throws error.
 inline void write_file(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw error("cannot write " + file.string());
+  try {
+    common::write_file_atomically(file, text);
+  } catch (const std::runtime_error& e) {
+    throw error(e.what());
+  }
 }
 
 }  // namespace stride::cosim

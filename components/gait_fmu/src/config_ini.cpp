@@ -5,6 +5,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "stride/common/files.hpp"
 #include "text_util.hpp"
 
 namespace stride::gait {
@@ -160,12 +161,11 @@ ini_document ini_document::load(const std::filesystem::path& file) {
 }
 
 void ini_document::save(const std::filesystem::path& file) const {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (!out) throw config_error(file.string() + ": cannot open file for writing");
-  const std::string text = str();
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throw config_error(file.string() + ": write error");
+  try {
+    common::write_file_atomically(file, str());
+  } catch (const std::runtime_error& e) {
+    throw config_error(e.what());
+  }
 }
 
 std::string ini_document::str() const {

@@ -1,8 +1,5 @@
 #include "stride/learner/artefacts.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -10,6 +7,8 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include "stride/common/files.hpp"
 
 namespace stride::learner {
 
@@ -132,28 +131,12 @@ void write_checkpoint(const fs::path& file, const checkpoint& c) {
     w.put(sh.merged_updates);
     w.put(sh.snapshots_written);
   }
-  const fs::path tmp = file.string() + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw learner_error("cannot write " + tmp.string() + ": " + errno_text());
-  std::size_t done = 0;
-  while (done < w.out.size()) {
-    const ssize_t n = ::write(fd, w.out.data() + done, w.out.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const std::string why = errno_text();
-      ::close(fd);
-      throw learner_error("cannot write " + tmp.string() + ": " + why);
-    }
-    done += static_cast<std::size_t>(n);
+  try {
+    common::write_file_atomically(
+        file, std::string_view(reinterpret_cast<const char*>(w.out.data()), w.out.size()));
+  } catch (const std::runtime_error& e) {
+    throw learner_error(e.what());
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    throw learner_error("cannot write " + tmp.string() + ": " + errno_text());
-  }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec)
-    throw learner_error("cannot rename " + tmp.string() + " to " + file.string() + ": " +
-                        ec.message());
 }
 
 checkpoint read_checkpoint(const fs::path& file) {
@@ -222,15 +205,11 @@ void write_value_table(const fs::path& file, const state_grid& grid, const value
   for (std::size_t s = 0; s < grid.size(); ++s) {
     text += csv_values(grid, s) + "," + format_number(v.get(s)) + "\n";
   }
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw learner_error("cannot write " + tmp.string());
+  try {
+    common::write_file_atomically(file, text);
+  } catch (const std::runtime_error& e) {
+    throw learner_error(e.what());
   }
-  std::error_code ec;
-  fs::rename(tmp, file, ec);
-  if (ec) throw learner_error("cannot write " + file.string() + ": " + ec.message());
 }
 
 artefact_writer::artefact_writer(fs::path dir, const state_grid& grid, bool log_steps,

@@ -48,7 +48,8 @@ class csv_recorder : public observer {
 
  private:
   void write_row(const execution& ex, time_point t);
-  void flush() noexcept;
+  /// Writes the buffered rows; \throws error naming the file when the write fails.
+  void flush();
 
   std::filesystem::path file_;
   std::vector<variable_id> variables_;
