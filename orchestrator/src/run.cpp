@@ -222,7 +222,7 @@ run_report run_system(system_structure system, const run_options& options) {
 
   report.system = system;
   built_system built = build_system(system, options.build);
-  fs::create_directories(report.output_dir);
+  create_output_folder(report.output_dir);
   write_file(report.output_dir / "system.xml", to_xml(as_written));
   report.manifest_file = report.output_dir / "manifest.json";
 

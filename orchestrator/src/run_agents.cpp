@@ -73,7 +73,7 @@ agents_report run_agents(system_structure system, const run_options& options,
                       : options.output_dir.empty() ? default_output_dir(system)
                                                    : options.output_dir;
   if (!resuming) check_output_folder_free(report.output_dir);
-  fs::create_directories(report.output_dir);
+  create_output_folder(report.output_dir);
   system_structure as_written = system;
   for (const auto& o : options.overrides) apply_override(as_written, o);
   write_file(report.output_dir / "system.xml", to_xml(as_written));
@@ -94,7 +94,7 @@ agents_report run_agents(system_structure system, const run_options& options,
         o.output_dir = report.output_dir / ("agent" + std::to_string(agent));
         if (resuming) {
           // each agent continues its own folder (made now if it was killed before it had one)
-          fs::create_directories(o.output_dir);
+          create_output_folder(o.output_dir);
           o.resume_dir = o.output_dir;
           o.record_file = fresh_results_name(o.output_dir, system.record.file);
         }

@@ -62,6 +62,13 @@ inline std::string utc_now() {
   return buf;
 }
 
+/// Creates the output folder `dir` (and its parents). \throws error naming it and the reason.
+inline void create_output_folder(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw error("cannot create the output folder " + dir.string() + ": " + ec.message());
+}
+
 /// Writes a whole file atomically (see common::write_file_atomically). \throws error.
 inline void write_file(const std::filesystem::path& file, const std::string& text) {
   try {

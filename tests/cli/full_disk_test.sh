@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A full disk never passes for success: `stride calibrate` and `stride run` writing into a small
+# A full or read-only disk never passes for success: `stride calibrate` and `stride run` writing into a small
 # tmpfs (in a private mount namespace) that fills up must exit non-zero naming the reason, leave
 # no empty or half-written result in place of a complete one, and keep an older file intact.
 # Needs root for the mount namespace; otherwise skipped (exit 77) with the reason.
@@ -47,7 +47,15 @@ if [ -e "$disk/run/manifest.json" ]; then
     fail "manifest: $(cat "$disk/run/manifest.json")"
 fi
 [ -z "$(find "$disk" -name '*.tmp')" ] || fail "temporary files left: $(find "$disk" -name '*.tmp')"
-echo "full disk: refused as it should be"
+
+# a read-only disk: refused before the first step, with the folder named
+mkdir "$disk/../ro"
+mount -t tmpfs -o size=64k,ro stride-read-only "$disk/../ro" || exit 77
+"$cli" run "$src/models/walk.xml" --stop-time 1 -o "$disk/../ro/run" > /dev/null \
+  2> "$disk/../ro.err" && fail "stride run succeeded on a read-only disk"
+grep -q "cannot create the output folder .*ro/run: Read-only file system" "$disk/../ro.err" ||
+  fail "the read-only error does not name the folder and the reason: $(cat "$disk/../ro.err")"
+echo "full and read-only disks: refused as they should be"
 INSIDE
 mkdir "$work/disk"
 unshare -m bash "$work/inside.sh" "$cli" "$src" "$work/disk"
