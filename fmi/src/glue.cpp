@@ -646,13 +646,15 @@ fmi2Status fmi2CancelStep(fmi2Component c) {
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status* value) {
   (void)s;
   instance* inst = enter(c, function::get_status, "fmi2GetStatus");
-  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (inst == nullptr) return fmi2Error;
+  if (value == nullptr) return fail(*inst, "fmi2GetStatus: null value pointer");
   return fmi2Discard;  // no status kind of this type applies to synchronous steps
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
   instance* inst = enter(c, function::get_status, "fmi2GetRealStatus");
-  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (inst == nullptr) return fmi2Error;
+  if (value == nullptr) return fail(*inst, "fmi2GetRealStatus: null value pointer");
   if (s != fmi2LastSuccessfulTime) return fmi2Discard;
   *value = to_seconds(inst->time);
   return fmi2OK;
@@ -661,13 +663,15 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer* value) {
   (void)s;
   instance* inst = enter(c, function::get_status, "fmi2GetIntegerStatus");
-  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (inst == nullptr) return fmi2Error;
+  if (value == nullptr) return fail(*inst, "fmi2GetIntegerStatus: null value pointer");
   return fmi2Discard;
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
   instance* inst = enter(c, function::get_status, "fmi2GetBooleanStatus");
-  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (inst == nullptr) return fmi2Error;
+  if (value == nullptr) return fail(*inst, "fmi2GetBooleanStatus: null value pointer");
   if (s != fmi2Terminated) return fmi2Discard;
   *value = inst->terminate_requested ? fmi2True : fmi2False;
   return fmi2OK;
@@ -676,7 +680,8 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boo
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String* value) {
   (void)s;
   instance* inst = enter(c, function::get_status, "fmi2GetStringStatus");
-  if (inst == nullptr || value == nullptr) return fmi2Error;
+  if (inst == nullptr) return fmi2Error;
+  if (value == nullptr) return fail(*inst, "fmi2GetStringStatus: null value pointer");
   return fmi2Discard;
 }
 
