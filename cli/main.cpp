@@ -7,6 +7,7 @@
 
 #include "calibrate.hpp"
 #include "commands.hpp"
+#include "plot.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/study/run_hooks.hpp"
@@ -104,14 +105,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   validate->add_flag("--quiet,-q", validate_args.quiet, "Print only problems");
 
-  std::string plot_dir;
-  bool plot_quiet = false;
-  auto* plot = app.add_subcommand(
-      "plot", "Write the figures (PNG, gnuplot) and summary of a learner run's output folder");
-  plot->add_option("run_dir", plot_dir, "Output folder of the run")
-      ->required()
-      ->check(CLI::ExistingDirectory);
-  plot->add_flag("--quiet,-q", plot_quiet, "Print nothing");
+  stride::cli::plot_arguments plot_args;
+  auto* plot = stride::cli::add_plot_command(app, plot_args);
 
   stride::cli::worker_arguments worker_args;
   auto* worker = stride::cli::add_worker_command(app, worker_args);
@@ -151,7 +146,10 @@ int main(int argc, char** argv) {
     if (*calibrate) return stride::cli::calibrate(calibrate_args);
     if (*worker) return stride::cli::worker(worker_args);
     if (*workers) return stride::cli::workers(workers_args);
-    if (*plot) return stride::study::plot(plot_dir, plot_quiet);
+    if (*plot) {
+      // the study adds the learner's figures and summary for its runs
+      return stride::cli::plot(plot_args, stride::study::plot_learner_runs);
+    }
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;

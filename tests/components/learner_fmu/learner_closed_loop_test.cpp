@@ -188,7 +188,7 @@ TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
   fs::create_directories(scratch.path() / "empty");
   const auto empty = stride("plot " + test::quoted(scratch.path() / "empty"));
   EXPECT_EQ(empty.exit_code, 1);
-  EXPECT_THAT(empty.err, HasSubstr("no learner artefacts"));
+  EXPECT_THAT(empty.err, HasSubstr("nothing to plot"));
 }
 
 TEST_F(learner_resume, plot_of_unreadable_learner_files_is_an_error_and_leaves_no_empty_folder) {
