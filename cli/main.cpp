@@ -38,8 +38,12 @@ int main(int argc, char** argv) {
   run->add_flag("--fmu-debug-log", run_args.fmu_debug_log,
                 "Instantiate FMUs with debug logging on");
   run->add_option("--resume", run_args.resume,
-                  "Continue the run in this output folder from its checkpoint (system: the "
-                  "folder's system.xml unless SYSTEM.xml is given; ${resume} = the folder)")
+                  "Continue the interrupted run in this output folder: from the state of every "
+                  "component when it was interrupted (its checkpoint.stride), simulated time and "
+                  "the results file going on; without that file the run starts over and "
+                  "components continue from their own checkpoints (${resume} = the folder). "
+                  "System: the folder's system.xml unless SYSTEM.xml is given. A finished run "
+                  "is left as it is (exit status 0)")
       ->check(CLI::ExistingDirectory);
   run_args.threads = stride::cosim::default_thread_count();
   run->add_option("--threads", run_args.threads,

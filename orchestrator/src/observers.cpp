@@ -117,21 +117,65 @@ void csv_recorder::attach(execution& ex) {
   }
   observed_.clear();
   for (const auto& v : variables_) observed_.push_back(algo.observe(v));
+  std::string header = "time";
+  for (const auto& v : variables_) {
+    header += ',';
+    append_csv_field(header, algo.full_name(v));
+  }
+  header += '\n';
+  if (continue_after_) {
+    keep_rows_until(*continue_after_, header);
+    out_ = std::fopen(file_.c_str(), "ab");
+    if (out_ == nullptr) {
+      throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+    }
+    last_row_ = *continue_after_;
+    return;
+  }
   if (!file_.parent_path().empty()) std::filesystem::create_directories(file_.parent_path());
   out_ = std::fopen(file_.c_str(), "wb");
   if (out_ == nullptr) {
     throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
   }
-  buffer_ = "time";
-  for (const auto& v : variables_) {
-    buffer_ += ',';
-    append_csv_field(buffer_, algo.full_name(v));
+  buffer_ = std::move(header);
+}
+
+void csv_recorder::continue_after(time_point after) {
+  continue_after_ = after;
+}
+
+void csv_recorder::keep_rows_until(time_point after, const std::string& header) {
+  std::FILE* in = std::fopen(file_.c_str(), "rb");
+  if (in == nullptr) {
+    throw error("cannot continue " + file_.string() + ": " + std::strerror(errno));
   }
-  buffer_ += '\n';
+  std::string text;
+  char chunk[1 << 16];
+  for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, in)) > 0;) text.append(chunk, n);
+  std::fclose(in);
+  if (!text.starts_with(header)) {
+    throw validation_error("cannot continue " + file_.string() +
+                           ": its header is not that of the signals recorded now");
+  }
+  // whole rows whose time is at most `after`
+  std::size_t keep = header.size();
+  for (std::size_t pos = header.size(); pos < text.size();) {
+    const std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) break;  // an incomplete last row
+    double seconds = 0;
+    const char* first = text.data() + pos;
+    const auto [ptr, ec] = std::from_chars(first, text.data() + end, seconds);
+    if (ec != std::errc() || *ptr != ',' || time_from_seconds(seconds) > after) break;
+    keep = pos = end + 1;
+  }
+  std::error_code ec;
+  std::filesystem::resize_file(file_, keep, ec);
+  if (ec) throw error("cannot continue " + file_.string() + ": " + ec.message());
 }
 
 void csv_recorder::write_row(const execution& ex, time_point t) {
   if (t == last_row_ || out_ == nullptr) return;
+  if (continue_after_ && t <= *continue_after_) return;  // the earlier part has these rows
   last_row_ = t;
   const auto& algo = ex;
   buffer_ += format_seconds(t);
