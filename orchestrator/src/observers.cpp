@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 
 #include "stride/cosim/error.hpp"
 
@@ -145,29 +146,25 @@ void csv_recorder::continue_after(time_point after) {
 }
 
 void csv_recorder::keep_rows_until(time_point after, const std::string& header) {
-  std::FILE* in = std::fopen(file_.c_str(), "rb");
-  if (in == nullptr) {
-    throw error("cannot continue " + file_.string() + ": " + std::strerror(errno));
-  }
-  std::string text;
-  char chunk[1 << 16];
-  for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, in)) > 0;) text.append(chunk, n);
-  std::fclose(in);
-  if (!text.starts_with(header)) {
+  std::ifstream in(file_, std::ios::binary);
+  if (!in) throw error("cannot continue " + file_.string() + ": " + std::strerror(errno));
+  std::string line;
+  if (!std::getline(in, line) || in.eof() || line + '\n' != header) {
     throw validation_error("cannot continue " + file_.string() +
                            ": its header is not that of the signals recorded now");
   }
-  // whole rows whose time is at most `after`
-  std::size_t keep = header.size();
-  for (std::size_t pos = header.size(); pos < text.size();) {
-    const std::size_t end = text.find('\n', pos);
-    if (end == std::string::npos) break;  // an incomplete last row
+  // whole rows (ended by a newline) whose time is at most `after`, read line by line
+  std::uintmax_t keep = header.size();
+  while (std::getline(in, line) && !in.eof()) {
     double seconds = 0;
-    const char* first = text.data() + pos;
-    const auto [ptr, ec] = std::from_chars(first, text.data() + end, seconds);
-    if (ec != std::errc() || *ptr != ',' || time_from_seconds(seconds) > after) break;
-    keep = pos = end + 1;
+    const char* end = line.data() + line.size();
+    const auto [ptr, ec] = std::from_chars(line.data(), end, seconds);
+    if (ec != std::errc() || (ptr != end && *ptr != ',') || time_from_seconds(seconds) > after) {
+      break;
+    }
+    keep += line.size() + 1;
   }
+  in.close();
   std::error_code ec;
   std::filesystem::resize_file(file_, keep, ec);
   if (ec) throw error("cannot continue " + file_.string() + ": " + ec.message());

@@ -366,6 +366,8 @@ run_report run_system(system_structure system, const run_options& options) {
                          ex.save_state_bytes());
         m.checkpoint = checkpoint_file({}).string();
       } catch (const std::exception& e) {
+        std::error_code ec;
+        fs::remove(checkpoint_file(report.output_dir), ec);  // not one of an earlier moment
         if (options.build.log) {
           options.build.log(log_level::warning, "stride", "",
                             std::string("no checkpoint to resume from: ") + e.what());
