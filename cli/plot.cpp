@@ -30,12 +30,26 @@ CLI::App* add_plot_command(CLI::App& app, plot_arguments& args) {
 
 int plot(const plot_arguments& args, const plot_extension& extension) {
   const std::vector<std::string> patterns = cosim::split_signal_patterns(args.signals);
-  std::vector<fs::path> files = cosim::write_run_plots(args.run_dir, patterns);
-  if (extension) {
-    const auto more = extension(args.run_dir, args.quiet);
-    files.insert(files.end(), more.begin(), more.end());
+  // a figures folder this call makes is removed again when it fails or draws nothing
+  const fs::path figures = args.run_dir / "figures";
+  const bool existed = fs::exists(figures);
+  const auto drop_figures = [&] {
+    std::error_code ec;
+    if (!existed) fs::remove_all(figures, ec);
+  };
+  std::vector<fs::path> files;
+  try {
+    files = cosim::write_run_plots(args.run_dir, patterns);
+    if (extension) {
+      const auto more = extension(args.run_dir, args.quiet);
+      files.insert(files.end(), more.begin(), more.end());
+    }
+  } catch (...) {
+    drop_figures();
+    throw;
   }
   if (files.empty()) {
+    drop_figures();
     throw cosim::validation_error(
         args.run_dir.string() +
         ": nothing to plot: no base pose (P.base_x with P.base_y) in the run's results, no "

@@ -233,7 +233,7 @@ std::vector<fs::path> write_run_plots(const fs::path& dir,
     for (const auto& [file, prefix] : runs) plot_run(file, prefix, signal_patterns, out);
   } catch (...) {
     std::error_code ec;
-    if (!existed) fs::remove(figures, ec);  // only when empty: nothing half-drawn is removed
+    if (!existed) fs::remove_all(figures, ec);  // made by this call: no half-drawn folder stays
     throw;
   }
   return written;

@@ -125,6 +125,12 @@ TEST_F(cosim_cli, plot_draws_any_run_and_refuses_what_it_cannot_draw) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("pattern 'c.*' matches no column"));
   EXPECT_FALSE(fs::exists(run / "figures"));
+  // without gnuplot: says so, and no figures folder stays behind
+  const auto no_gnuplot = run_command(
+      "PATH=/nonexistent '" + k_cli + "' plot " + quoted(run) + " --signals 'a.y'", scratch.path());
+  EXPECT_EQ(no_gnuplot.exit_code, 1);
+  EXPECT_THAT(no_gnuplot.err, HasSubstr("gnuplot not found"));
+  EXPECT_FALSE(fs::exists(run / "figures"));
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
   r = stride("plot " + quoted(run) + " --signals 'a.*'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
