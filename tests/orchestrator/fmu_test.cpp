@@ -501,6 +501,47 @@ TEST_F(cosim_fmu_test, a_run_stopped_by_a_signal_and_resumed_equals_the_uninterr
   }
 }
 
+#ifdef STRIDE_MINI_FMU
+// a component that cannot save its state (canGetAndSetFMUstate false): the interrupted run says
+// so and leaves no checkpoint; without ${resume} in the system nothing can be resumed, and the
+// attempt changes nothing
+TEST_F(cosim_fmu_test, a_run_whose_state_cannot_be_saved_leaves_no_checkpoint) {
+  const fs::path system = scratch.path() / "mini.xml";
+  std::ofstream(system) << "<?xml version=\"1.0\"?>\n<system name=\"mini\" version=\"1\">\n"
+                           "  <simulation start=\"0\" stop=\"100000\" step=\"0.01\"/>\n"
+                           "  <component name=\"m\" fmu=\"" STRIDE_MINI_FMU
+                           "\"/>\n"
+                           "  <record interval=\"0.5\" file=\"results.csv\"/>\n</system>\n";
+  const fs::path out = scratch.path() / "mini";
+  const pid_t pid =
+      test::spawn({k_cli, "run", system.string(), "--quiet", "--output", out.string()},
+                  scratch.path() / "run.log");
+  ASSERT_GT(pid, 0);
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!(fs::exists(out / "results.csv") && fs::file_size(out / "results.csv") > 2000) &&
+         std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << read_text(scratch.path() / "run.log");
+  EXPECT_THAT(read_text(scratch.path() / "run.log"), HasSubstr("no checkpoint to resume from"));
+  EXPECT_FALSE(fs::exists(checkpoint_file(out)));
+  const std::string manifest = read_text(out / "manifest.json");
+  EXPECT_THAT(manifest, HasSubstr("\"interrupted_at\": "));
+  EXPECT_THAT(manifest, ::testing::Not(HasSubstr("\"checkpoint\"")));
+
+  const auto before = folder_contents(out);
+  const auto r =
+      test::run_command("'" + k_cli + "' run --resume " + quoted(out) + " --quiet", scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("holds no checkpoint of an interrupted run"));
+  EXPECT_EQ(folder_contents(out), before);
+}
+#endif
+
 // validate checks what run checks before its first step
 TEST_F(cosim_fmu_test, validate_refuses_what_run_would_refuse_before_stepping) {
   auto r = test::run_command("'" + k_cli + "' validate " + quoted(k_data / "stride_test_pair.xml") +
