@@ -120,7 +120,9 @@ int run(const run_arguments& args, const run_extension& extension) {
     if (!args.output.empty()) throw validation_error("--resume and --output exclude each other");
   }
   system_structure system = load_system(system_file, extension);
-  if (!options.resume_dir.empty() && system.agents.count == 0) {
+  if (!options.resume_dir.empty() && system.agents.count == 0 &&
+      !fs::exists(checkpoint_file(options.resume_dir))) {
+    // starting over: the results of the interrupted run stay as they are
     options.record_file = fresh_results_name(options.resume_dir, system.record.file);
   }
   if (extension.check) {
@@ -135,6 +137,20 @@ int run(const run_arguments& args, const run_extension& extension) {
                              std::to_string(system.agents.count) + " agents");
     }
     system.agents.count = args.agents;
+  }
+  if (!options.resume_dir.empty()) {
+    // a finished run stays as it is
+    const run_status before = read_run_status(options.resume_dir);
+    if (before.status == "ok") {
+      std::string how;
+      if (!before.ended_by.empty()) {
+        how = " (" + before.ended_by +
+              (before.end_time.empty() ? "" : " at t = " + before.end_time + " s") + ")";
+      }
+      std::printf("%s: the run has finished%s: nothing to resume\n",
+                  options.resume_dir.string().c_str(), how.c_str());
+      return 0;
+    }
   }
   if (system.agents.count > 0) return run_agents(std::move(system), options, args, extension);
   const run_report report = run_system(std::move(system), options);

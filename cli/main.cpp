@@ -8,6 +8,7 @@
 #include "calibrate.hpp"
 #include "commands.hpp"
 #include "installed_files.hpp"
+#include "plot.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/study/run_hooks.hpp"
@@ -41,8 +42,12 @@ int main(int argc, char** argv) {
   run->add_flag("--fmu-debug-log", run_args.fmu_debug_log,
                 "Instantiate FMUs with debug logging on");
   run->add_option("--resume", run_args.resume,
-                  "Continue the run in this output folder from its checkpoint (system: the "
-                  "folder's system.xml unless SYSTEM.xml is given; ${resume} = the folder)")
+                  "Continue the interrupted run in this output folder: from the state of every "
+                  "component when it was interrupted (its checkpoint.stride), simulated time and "
+                  "the results file going on; without that file the run starts over and "
+                  "components continue from their own checkpoints (${resume} = the folder). "
+                  "System: the folder's system.xml unless SYSTEM.xml is given. A finished run "
+                  "is left as it is (exit status 0)")
       ->check(CLI::ExistingDirectory);
   run_args.threads = stride::cosim::default_thread_count();
   run->add_option("--threads", run_args.threads,
@@ -108,14 +113,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   validate->add_flag("--quiet,-q", validate_args.quiet, "Print only problems");
 
-  std::string plot_dir;
-  bool plot_quiet = false;
-  auto* plot = app.add_subcommand(
-      "plot", "Write the figures (PNG, gnuplot) and summary of a learner run's output folder");
-  plot->add_option("run_dir", plot_dir, "Output folder of the run")
-      ->required()
-      ->check(CLI::ExistingDirectory);
-  plot->add_flag("--quiet,-q", plot_quiet, "Print nothing");
+  stride::cli::plot_arguments plot_args;
+  auto* plot = stride::cli::add_plot_command(app, plot_args);
 
   stride::cli::worker_arguments worker_args;
   auto* worker = stride::cli::add_worker_command(app, worker_args);
@@ -155,7 +154,10 @@ int main(int argc, char** argv) {
     if (*calibrate) return stride::cli::calibrate(calibrate_args);
     if (*worker) return stride::cli::worker(worker_args);
     if (*workers) return stride::cli::workers(workers_args);
-    if (*plot) return stride::study::plot(plot_dir, plot_quiet);
+    if (*plot) {
+      // the study adds the learner's figures and summary for its runs
+      return stride::cli::plot(plot_args, stride::study::plot_learner_runs);
+    }
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;

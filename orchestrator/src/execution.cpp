@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "state_bytes.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim {
@@ -269,6 +270,50 @@ void execution::restore_state(const execution_state& s) {
   algo_->restore_state(s.algorithm);
   steps_ = s.steps;
   now_ = start_ + steps_ * algo_->base_step();
+}
+
+namespace {
+constexpr std::string_view k_state_magic = "stride execution state 1";
+}  // namespace
+
+std::vector<std::byte> execution::save_state_bytes() const {
+  const execution_state s = save_state();
+  detail::byte_writer w;
+  w.put_string(std::string(k_state_magic));
+  w.put(static_cast<std::int64_t>(s.steps));
+  w.put_size(s.components.size());
+  for (std::size_t i = 0; i < s.components.size(); ++i) {
+    w.put_string(components_[i]->name());
+    w.put_bytes(s.components[i]);
+  }
+  w.put_bytes(algo_->state_to_bytes(s.algorithm));
+  return w.take();
+}
+
+void execution::restore_state_bytes(std::span<const std::byte> bytes) {
+  detail::byte_reader r(bytes, "saved execution state");
+  if (r.get_string() != k_state_magic) {
+    throw validation_error("saved execution state: not a state written by this version");
+  }
+  execution_state s;
+  s.steps = r.get<std::int64_t>();
+  const std::size_t n = r.get_size();
+  if (n != components_.size()) {
+    throw validation_error("saved execution state: " + std::to_string(n) +
+                           " components, the system has " + std::to_string(components_.size()));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string name = r.get_string();
+    if (name != components_[i]->name()) {
+      throw validation_error("saved execution state: component " + std::to_string(i + 1) + " is '" +
+                             name + "', in the system '" + components_[i]->name() + "'");
+    }
+    const auto b = r.get_bytes();
+    s.components.emplace_back(b.begin(), b.end());
+  }
+  s.algorithm = algo_->state_from_bytes(r.get_bytes());
+  if (!r.at_end()) r.fail();
+  restore_state(s);
 }
 
 void execution::terminate_components() noexcept {

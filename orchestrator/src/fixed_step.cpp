@@ -4,6 +4,7 @@
 #include <map>
 #include <thread>
 
+#include "state_bytes.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/error.hpp"
 #include "task_runner.hpp"
@@ -515,6 +516,50 @@ void fixed_step_algorithm::restore_state(const std::any& state) {
     p.entries[i].terminated = false;
   }
   for (auto& g : p.groups) g.prepared = false;  // the groups get the restored caches
+}
+
+std::vector<std::byte> fixed_step_algorithm::state_to_bytes(const std::any& state) const {
+  const auto* s = std::any_cast<cached_state>(&state);
+  if (s == nullptr) throw validation_error("state_to_bytes(): not a state of this algorithm");
+  detail::byte_writer w;
+  w.put(static_cast<std::int64_t>(s->now.time_since_epoch().count()));
+  w.put(static_cast<std::int64_t>(s->steps));
+  w.put_size(s->entries.size());
+  for (const auto& e : s->entries) {
+    w.put(static_cast<std::int64_t>(e.time.time_since_epoch().count()));
+    w.put_block(e.latest);
+    w.put_block(e.published);
+  }
+  return w.take();
+}
+
+std::any fixed_step_algorithm::state_from_bytes(std::span<const std::byte> bytes) const {
+  detail::byte_reader r(bytes, "the algorithm's saved state");
+  cached_state s;
+  s.now = time_point(duration(r.get<std::int64_t>()));
+  s.steps = r.get<std::int64_t>();
+  const std::size_t n = r.get_size();
+  if (n != pimpl_->entries.size()) {
+    throw validation_error("the algorithm's saved state has " + std::to_string(n) +
+                           " components, the system " + std::to_string(pimpl_->entries.size()));
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    cached_entry e;
+    e.time = time_point(duration(r.get<std::int64_t>()));
+    e.latest = r.get_block();
+    e.published = r.get_block();
+    const value_block& now = pimpl_->entries[i].latest;
+    for (const value_block* b : {&e.latest, &e.published}) {
+      if (b->reals.size() != now.reals.size() || b->integers.size() != now.integers.size() ||
+          b->booleans.size() != now.booleans.size() || b->strings.size() != now.strings.size()) {
+        throw validation_error("the algorithm's saved state does not fit component '" +
+                               pimpl_->entries[i].c->name() + "': another system or wiring");
+      }
+    }
+    s.entries.push_back(std::move(e));
+  }
+  if (!r.at_end()) r.fail();
+  return s;
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 
 #include "stride/cosim/error.hpp"
 
@@ -120,21 +121,61 @@ void csv_recorder::attach(execution& ex) {
   }
   observed_.clear();
   for (const auto& v : variables_) observed_.push_back(algo.observe(v));
+  std::string header = "time";
+  for (const auto& v : variables_) {
+    header += ',';
+    append_csv_field(header, algo.full_name(v));
+  }
+  header += '\n';
+  if (continue_after_) {
+    keep_rows_until(*continue_after_, header);
+    out_ = std::fopen(file_.c_str(), "ab");
+    if (out_ == nullptr) {
+      throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+    }
+    last_row_ = *continue_after_;
+    return;
+  }
   if (!file_.parent_path().empty()) std::filesystem::create_directories(file_.parent_path());
   out_ = std::fopen(file_.c_str(), "wb");
   if (out_ == nullptr) {
     throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
   }
-  buffer_ = "time";
-  for (const auto& v : variables_) {
-    buffer_ += ',';
-    append_csv_field(buffer_, algo.full_name(v));
+  buffer_ = std::move(header);
+}
+
+void csv_recorder::continue_after(time_point after) {
+  continue_after_ = after;
+}
+
+void csv_recorder::keep_rows_until(time_point after, const std::string& header) {
+  std::ifstream in(file_, std::ios::binary);
+  if (!in) throw error("cannot continue " + file_.string() + ": " + std::strerror(errno));
+  std::string line;
+  if (!std::getline(in, line) || in.eof() || line + '\n' != header) {
+    throw validation_error("cannot continue " + file_.string() +
+                           ": its header is not that of the signals recorded now");
   }
-  buffer_ += '\n';
+  // whole rows (ended by a newline) whose time is at most `after`, read line by line
+  std::uintmax_t keep = header.size();
+  while (std::getline(in, line) && !in.eof()) {
+    double seconds = 0;
+    const char* end = line.data() + line.size();
+    const auto [ptr, ec] = std::from_chars(line.data(), end, seconds);
+    if (ec != std::errc() || (ptr != end && *ptr != ',') || time_from_seconds(seconds) > after) {
+      break;
+    }
+    keep += line.size() + 1;
+  }
+  in.close();
+  std::error_code ec;
+  std::filesystem::resize_file(file_, keep, ec);
+  if (ec) throw error("cannot continue " + file_.string() + ": " + ec.message());
 }
 
 void csv_recorder::write_row(const execution& ex, time_point t) {
   if (t == last_row_ || out_ == nullptr) return;
+  if (continue_after_ && t <= *continue_after_) return;  // the earlier part has these rows
   last_row_ = t;
   const auto& algo = ex;
   buffer_ += format_seconds(t);

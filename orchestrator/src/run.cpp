@@ -3,9 +3,12 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
+#include <iterator>
+#include <span>
 #include <sstream>
 
 #include "run_files.hpp"
+#include "state_bytes.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/observers.hpp"
 
@@ -28,7 +31,9 @@ struct manifest_data {
   const built_system* built = nullptr;
   const run_report* report = nullptr;
   std::string started;
-  std::string resumed_from;  ///< the --resume folder, if any
+  std::string resumed_from;              ///< the --resume folder, if any
+  std::optional<time_point> resumed_at;  ///< continued from a checkpoint at this time
+  std::string checkpoint;                ///< file name of the checkpoint written, if any
 };
 
 std::string manifest_json(const manifest_data& m) {
@@ -62,6 +67,11 @@ std::string manifest_json(const manifest_data& m) {
                    : r.result.interrupted ? "interrupted"
                                           : "stop time")
     << ",\n";
+  if (r.result.interrupted && r.error.empty()) {
+    j << "  \"interrupted_at\": " << format_seconds(r.result.end_time) << ",\n";
+  }
+  if (!m.checkpoint.empty()) j << "  \"checkpoint\": " << json_string(m.checkpoint) << ",\n";
+  if (m.resumed_at) j << "  \"resumed_at\": " << format_seconds(*m.resumed_at) << ",\n";
   j << "  \"wall_time_s\": " << json_number(r.wall_seconds) << ",\n";
   j << "  \"real_time_factor\": " << json_number(r.real_time_factor) << ",\n";
   // every value the system sets, so that a run can be told apart from another (seeds included)
@@ -92,7 +102,62 @@ std::string manifest_json(const manifest_data& m) {
   return j.str();
 }
 
+constexpr std::string_view k_checkpoint_magic = "stride run checkpoint 1";
+
+void write_checkpoint(const fs::path& file, time_point t, const std::vector<std::byte>& state) {
+  detail::byte_writer w;
+  w.put_string(std::string(k_checkpoint_magic));
+  w.put(static_cast<std::int64_t>(t.time_since_epoch().count()));
+  w.put_bytes(state);
+  const std::vector<std::byte> bytes = w.take();
+  // whole or not at all: a checkpoint cut short would be worse than none
+  const fs::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, file);
+}
+
+struct checkpoint_data {
+  time_point time{};
+  std::vector<std::byte> state;
+};
+
+checkpoint_data read_checkpoint(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.eof() && !in) throw error("cannot read " + file.string());
+  const auto bytes = std::as_bytes(std::span(text.data(), text.size()));
+  detail::byte_reader r(bytes, file.string());
+  if (r.get_string() != k_checkpoint_magic) {
+    throw validation_error(file.string() + ": not a checkpoint of this version of stride");
+  }
+  checkpoint_data c;
+  c.time = time_point(duration(r.get<std::int64_t>()));
+  const auto state = r.get_bytes();
+  c.state.assign(state.begin(), state.end());
+  if (!r.at_end()) r.fail();
+  return c;
+}
+
 }  // namespace
+
+fs::path checkpoint_file(const fs::path& run_dir) {
+  return run_dir / "checkpoint.stride";
+}
+
+run_status read_run_status(const fs::path& run_dir) {
+  const fs::path manifest = run_dir / "manifest.json";
+  run_status s;
+  if (!fs::is_regular_file(manifest)) return s;
+  s.status = read_manifest_field(manifest, "status");
+  s.end_time = read_manifest_field(manifest, "end_time");
+  s.ended_by = read_manifest_field(manifest, "ended_by");
+  return s;
+}
 
 fs::path default_output_dir(const system_structure& system) {
   const std::time_t t = std::time(nullptr);
@@ -186,6 +251,13 @@ run_report run_system(system_structure system, const run_options& options) {
   system.agents = {};
   for (const auto& o : options.overrides) apply_override(system, o);
   if (options.stop) system.stop = *options.stop;
+  // what is recorded belongs to the run as written: a resumed run records the same
+  if (!options.record_signals.empty()) {
+    system.record.enabled = true;
+    system.record.signals = options.record_signals;
+    system.record.signal_locations.clear();
+  }
+  if (options.record_interval) system.record.interval = *options.record_interval;
   // the copies of replica groups get their own names and ${copy} values before the run's
   // placeholders are substituted; system.xml keeps the groups
   const system_structure as_written = system;
@@ -207,18 +279,18 @@ run_report run_system(system_structure system, const run_options& options) {
   const std::size_t resume_uses = substitute_placeholders(
       system, fs::absolute(report.output_dir),
       resuming ? fs::absolute(options.resume_dir) : fs::path(), placeholders);
-  if (resuming && resume_uses == 0) {
-    throw validation_error("--resume: no parameter of system '" + system.name +
-                           "' uses ${resume}, so nothing would continue from " +
-                           options.resume_dir.string());
+  // a run interrupted between two steps left the state of the whole system: go on from there
+  std::optional<checkpoint_data> saved;
+  if (resuming && !as_agent && fs::exists(checkpoint_file(options.resume_dir))) {
+    saved = read_checkpoint(checkpoint_file(options.resume_dir));
+  }
+  if (resuming && resume_uses == 0 && !saved) {
+    throw validation_error("--resume: " + options.resume_dir.string() +
+                           " holds no checkpoint of an interrupted run (" +
+                           checkpoint_file({}).string() + ") and no parameter of system '" +
+                           system.name + "' uses ${resume}, so nothing would continue from it");
   }
   if (options.record_file) system.record.file = *options.record_file;
-  if (!options.record_signals.empty()) {
-    system.record.enabled = true;
-    system.record.signals = options.record_signals;
-    system.record.signal_locations.clear();
-  }
-  if (options.record_interval) system.record.interval = *options.record_interval;
 
   report.system = system;
   built_system built = build_system(system, options.build);
@@ -245,8 +317,10 @@ run_report run_system(system_structure system, const run_options& options) {
       }
     }
     try {
-      ex.add_observer(
-          std::make_shared<csv_recorder>(report.results_file, vars, system.record.interval));
+      auto recorder =
+          std::make_shared<csv_recorder>(report.results_file, vars, system.record.interval);
+      if (saved) recorder->continue_after(saved->time);  // the rows so far stay
+      ex.add_observer(std::move(recorder));
     } catch (const validation_error& e) {
       const std::string where = system.record.where.str();
       throw validation_error((where.empty() ? "" : where + ": ") + e.what());
@@ -254,13 +328,19 @@ run_report run_system(system_structure system, const run_options& options) {
   }
   if (options.progress) ex.add_observer(std::make_shared<progress_display>(built.stop));
 
-  manifest_data m{&system, &built, &report, utc_now(),
-                  resuming ? fs::absolute(options.resume_dir).string() : std::string()};
+  manifest_data m;
+  m.system = &system;
+  m.built = &built;
+  m.report = &report;
+  m.started = utc_now();
+  if (resuming) m.resumed_from = fs::absolute(options.resume_dir).string();
+  if (saved) m.resumed_at = saved->time;
   const auto wall_start = std::chrono::steady_clock::now();
   auto finish_report = [&] {
     report.wall_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    const double simulated = to_seconds(report.result.end_time - system.start);
+    const double simulated =
+        to_seconds(report.result.end_time - (saved ? saved->time : system.start));
     report.real_time_factor = report.wall_seconds > 0 ? simulated / report.wall_seconds : 0.0;
   };
   if (options.initialize_only) {
@@ -269,7 +349,34 @@ run_report run_system(system_structure system, const run_options& options) {
     return report;
   }
   try {
+    if (saved) {
+      ex.initialize(built.stop);
+      ex.restore_state_bytes(saved->state);
+      if (ex.current_time() != saved->time) {
+        throw validation_error(checkpoint_file(options.resume_dir).string() +
+                               ": damaged (its time is not that of its state)");
+      }
+    }
     report.result = ex.simulate_until(built.stop, options.interrupt);
+    if (report.result.interrupted && !as_agent) {
+      // between two steps: every component can be saved as it is now (agents are resumed
+      // from their journal instead, stride/cosim/run_agents.hpp)
+      try {
+        write_checkpoint(checkpoint_file(report.output_dir), ex.current_time(),
+                         ex.save_state_bytes());
+        m.checkpoint = checkpoint_file({}).string();
+      } catch (const std::exception& e) {
+        std::error_code ec;
+        fs::remove(checkpoint_file(report.output_dir), ec);  // not one of an earlier moment
+        if (options.build.log) {
+          options.build.log(log_level::warning, "stride", "",
+                            std::string("no checkpoint to resume from: ") + e.what());
+        }
+      }
+    } else if (!report.result.interrupted) {
+      std::error_code ec;
+      fs::remove(checkpoint_file(report.output_dir), ec);  // finished: nothing to resume
+    }
     ex.end();
   } catch (const std::exception& e) {
     report.error = e.what();

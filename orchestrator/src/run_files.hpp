@@ -70,6 +70,31 @@ inline void create_output_folder(const std::filesystem::path& dir) {
 }
 
 /// Writes a whole file atomically (see common::write_file_atomically). \throws error.
+/// The value of a top-level field of a manifest.json as written above: a string without its
+/// quotes, a number as written; "" when the field is absent or the file unreadable.
+inline std::string read_manifest_field(const std::filesystem::path& manifest,
+                                       const std::string& key) {
+  std::ifstream in(manifest, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  const std::string quoted = "\n  \"" + key + "\": ";
+  const auto at = s.find(quoted);
+  if (at == std::string::npos) return {};
+  auto begin = at + quoted.size();
+  if (begin < s.size() && s[begin] == '"') {
+    ++begin;
+    std::string value;
+    for (auto i = begin; i < s.size() && s[i] != '"'; ++i) {
+      if (s[i] == '\\' && i + 1 < s.size()) ++i;  // \" and \\ as json_string writes them
+      value += s[i];
+    }
+    return value;
+  }
+  const auto end = s.find_first_of(",\n}", begin);
+  return s.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+}
+
 inline void write_file(const std::filesystem::path& file, const std::string& text) {
   try {
     common::write_file_atomically(file, text);

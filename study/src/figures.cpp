@@ -1,6 +1,7 @@
 #include "stride/study/figures.hpp"
 
-#include "gnuplot.hpp"
+#include "axis_units.hpp"
+#include "stride/cosim/gnuplot.hpp"
 #include "stride/learner/artefacts.hpp"
 #include "stride/study/run_folder.hpp"
 
@@ -24,12 +25,12 @@ csv_table read_csv(const fs::path& file) {
   return learner::read_csv_log(file);
 }
 
+namespace gnuplot = cosim::gnuplot;
 using gnuplot::num;
 using gnuplot::quote;
-using gnuplot::unit_of;
 using gnuplot::write_text;
 
-const char* k_terminal = "set terminal pngcairo size 960,680 noenhanced font ',11'\n";
+const char* k_terminal = gnuplot::k_png_terminal;
 
 // moving average over the last `n` values (fewer at the start)
 std::vector<double> moving_average(const std::vector<double>& v, std::size_t n) {

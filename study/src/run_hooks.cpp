@@ -31,13 +31,12 @@ void report_after_run(const cosim::run_report& report, bool quiet, bool figures)
   }
 }
 
-int plot(const std::filesystem::path& run_dir, bool quiet) {
+std::vector<std::filesystem::path> plot_learner_runs(const std::filesystem::path& run_dir,
+                                                     bool quiet) {
+  if (!has_learner_artefacts(run_dir)) return {};
   const auto files = write_figures(run_dir);
-  if (!quiet) {
-    std::fputs(summarize_run(run_dir).c_str(), stdout);
-    for (const auto& f : files) std::printf("figure: %s\n", f.string().c_str());
-  }
-  return 0;
+  if (!quiet) std::fputs(summarize_run(run_dir).c_str(), stdout);
+  return files;
 }
 
 std::string_view demo_scenario_xml() {

@@ -6,15 +6,16 @@
 #include <map>
 #include <stdexcept>
 
-#include "gnuplot.hpp"
+#include "axis_units.hpp"
+#include "stride/cosim/gnuplot.hpp"
 #include "stride/learner/artefacts.hpp"
 
 namespace stride::study {
 
 namespace fs = std::filesystem;
+namespace gnuplot = cosim::gnuplot;
 using gnuplot::num;
 using gnuplot::quote;
-using gnuplot::unit_of;
 
 namespace {
 

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
 
 #include "process.hpp"
 #include "stride/cosim/archive.hpp"
@@ -105,6 +107,43 @@ TEST_F(cosim_cli, inspect_lists_variables_without_loading_the_binary) {
   const auto v = stride("validate " + quoted(fmu));
   EXPECT_EQ(v.exit_code, 1);
   EXPECT_THAT(v.err, HasSubstr("missing binary binaries/linux64/demo.so"));
+}
+
+// `stride plot` on a run folder of any system (a results CSV written here, no FMU needed)
+TEST_F(cosim_cli, plot_draws_any_run_and_refuses_what_it_cannot_draw) {
+  const fs::path run = scratch.path() / "run";
+  fs::create_directories(run);
+  std::ofstream(run / "results.csv") << "time,a.y,b.echo\n0,1,2\n0.5,2,3\n1,4,5\n";
+  // no pose, no signals chosen: says so, non-zero, no empty figures/ left
+  auto r = stride("plot " + quoted(run));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("nothing to plot"));
+  EXPECT_EQ(lines(r.err), 1u);
+  EXPECT_FALSE(fs::exists(run / "figures"));
+  // a pattern matching no column is named
+  r = stride("plot " + quoted(run) + " --signals 'a.y,c.*'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("pattern 'c.*' matches no column"));
+  EXPECT_FALSE(fs::exists(run / "figures"));
+  // without gnuplot: says so, and no figures folder stays behind
+  const auto no_gnuplot = run_command(
+      "PATH=/nonexistent '" + k_cli + "' plot " + quoted(run) + " --signals 'a.y'", scratch.path());
+  EXPECT_EQ(no_gnuplot.exit_code, 1);
+  EXPECT_THAT(no_gnuplot.err, HasSubstr("gnuplot not found"));
+  EXPECT_FALSE(fs::exists(run / "figures"));
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  r = stride("plot " + quoted(run) + " --signals 'a.*'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("figure: " + (run / "figures" / "signal_a.y.png").string()));
+  EXPECT_TRUE(fs::is_regular_file(run / "figures" / "signal_a.y.png"));
+  EXPECT_FALSE(fs::exists(run / "figures" / "signal_b.echo.png"));
+  // a pose by the naming rule, whatever its prefix
+  std::ofstream(run / "results.csv") << "time,cart.base_x,cart.base_y\n0,0,0\n1,1,0.5\n";
+  r = stride("plot " + quoted(run) + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_TRUE(fs::is_regular_file(run / "figures" / "path_cart.png"));
+  EXPECT_THAT(stride("plot --help").out, HasSubstr("P.base_x with P.base_y"));
 }
 
 }  // namespace

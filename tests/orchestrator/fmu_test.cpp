@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -405,6 +406,141 @@ TEST_F(cosim_fmu_test, a_run_stopped_by_a_signal_keeps_its_results_and_says_so) 
     EXPECT_GT(rows, 3);
   }
 }
+
+// the times of a results CSV, row by row
+std::vector<double> result_times(const fs::path& csv) {
+  std::vector<double> times;
+  const auto rows = read_lines(csv);
+  for (std::size_t i = 1; i < rows.size(); ++i) times.push_back(std::stod(rows[i]));
+  return times;
+}
+
+// every file below `dir` with its content
+std::map<std::string, std::string> folder_contents(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read_text(e.path());
+  }
+  return files;
+}
+
+// SIGINT or SIGTERM, then `stride run --resume`: the run goes on from where it stopped, and its
+// results are those of the run that was never stopped; a finished run is left as it is
+TEST_F(cosim_fmu_test, a_run_stopped_by_a_signal_and_resumed_equals_the_uninterrupted_run) {
+  const fs::path system = k_data / "stride_test_counting.xml";
+  // 10 million steps: long enough to be stopped while stepping (the results are flushed every
+  // 64 KiB, after about 1 % of the run)
+  const std::vector<std::string> run = {k_cli,         "run",    system.string(),
+                                        "--stop-time", "100000", "--record-interval",
+                                        "0.5",         "--quiet"};
+  const fs::path full = scratch.path() / "full";
+  {
+    std::string command;
+    for (const auto& a : run) command += test::quoted(fs::path(a)) + " ";
+    const auto r = test::run_command(command + "--output " + quoted(full), scratch.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const std::vector<double> full_times = result_times(full / "results.csv");
+  ASSERT_EQ(full_times.size(), 200001u);  // 0, 0.5, ..., 100000
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const fs::path out = scratch.path() / ("stopped-" + std::to_string(signal));
+    auto args = run;
+    args.insert(args.end(), {"--output", out.string()});
+    const pid_t pid = test::spawn(args, scratch.path() / "run.log");
+    ASSERT_GT(pid, 0);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!(fs::exists(out / "results.csv") && fs::file_size(out / "results.csv") > 2000) &&
+           std::chrono::steady_clock::now() < until) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ::kill(pid, signal);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    ASSERT_EQ(WEXITSTATUS(status), 128 + signal)
+        << "the run was not stopped by the signal: " << read_text(scratch.path() / "run.log");
+
+    // the manifest says when; the rows end there; the checkpoint is there
+    const std::string manifest = read_text(out / "manifest.json");
+    EXPECT_THAT(manifest, HasSubstr("\"status\": \"interrupted\""));
+    const auto at = manifest.find("\"interrupted_at\": ");
+    ASSERT_NE(at, std::string::npos) << manifest;
+    const double stopped_at = std::stod(manifest.substr(at + 18));
+    EXPECT_GT(stopped_at, 0.0);
+    EXPECT_LT(stopped_at, 100000.0);
+    EXPECT_THAT(manifest, HasSubstr("\"checkpoint\": \"checkpoint.stride\""));
+    EXPECT_TRUE(fs::exists(checkpoint_file(out)));
+    const std::vector<double> first_part = result_times(out / "results.csv");
+    ASSERT_FALSE(first_part.empty());
+    EXPECT_LE(first_part.back(), stopped_at);
+    EXPECT_LT(first_part.size(), full_times.size());
+
+    const auto r = test::run_command("'" + k_cli + "' run --resume " + quoted(out) + " --quiet",
+                                     scratch.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    // one series: the same rows as the run that was never stopped, times strictly increasing
+    const std::vector<double> times = result_times(out / "results.csv");
+    ASSERT_EQ(times.size(), full_times.size());
+    for (std::size_t i = 1; i < times.size(); ++i) ASSERT_LT(times[i - 1], times[i]) << i;
+    EXPECT_EQ(read_text(out / "results.csv"), read_text(full / "results.csv"));
+    EXPECT_FALSE(fs::exists(out / "results-resumed.csv"));
+    EXPECT_FALSE(fs::exists(checkpoint_file(out)));  // finished: nothing to resume from
+    const std::string resumed = read_text(out / "manifest.json");
+    EXPECT_THAT(resumed, HasSubstr("\"status\": \"ok\""));
+    EXPECT_THAT(resumed, HasSubstr("\"resumed_at\": "));
+    EXPECT_THAT(resumed, HasSubstr("\"end_time\": 100000,"));
+
+    // resuming the finished run says so and changes nothing
+    const auto before = folder_contents(out);
+    const auto again = test::run_command("'" + k_cli + "' run --resume " + quoted(out) + " --quiet",
+                                         scratch.path());
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_THAT(again.out, HasSubstr("the run has finished"));
+    EXPECT_THAT(again.out, HasSubstr("nothing to resume"));
+    EXPECT_EQ(folder_contents(out), before);
+  }
+}
+
+#ifdef STRIDE_MINI_FMU
+// a component that cannot save its state (canGetAndSetFMUstate false): the interrupted run says
+// so and leaves no checkpoint; without ${resume} in the system nothing can be resumed, and the
+// attempt changes nothing
+TEST_F(cosim_fmu_test, a_run_whose_state_cannot_be_saved_leaves_no_checkpoint) {
+  const fs::path system = scratch.path() / "mini.xml";
+  std::ofstream(system) << "<?xml version=\"1.0\"?>\n<system name=\"mini\" version=\"1\">\n"
+                           "  <simulation start=\"0\" stop=\"100000\" step=\"0.01\"/>\n"
+                           "  <component name=\"m\" fmu=\"" STRIDE_MINI_FMU
+                           "\"/>\n"
+                           "  <record interval=\"0.5\" file=\"results.csv\"/>\n</system>\n";
+  const fs::path out = scratch.path() / "mini";
+  const pid_t pid =
+      test::spawn({k_cli, "run", system.string(), "--quiet", "--output", out.string()},
+                  scratch.path() / "run.log");
+  ASSERT_GT(pid, 0);
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!(fs::exists(out / "results.csv") && fs::file_size(out / "results.csv") > 2000) &&
+         std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << read_text(scratch.path() / "run.log");
+  EXPECT_THAT(read_text(scratch.path() / "run.log"), HasSubstr("no checkpoint to resume from"));
+  EXPECT_FALSE(fs::exists(checkpoint_file(out)));
+  const std::string manifest = read_text(out / "manifest.json");
+  EXPECT_THAT(manifest, HasSubstr("\"interrupted_at\": "));
+  EXPECT_THAT(manifest, ::testing::Not(HasSubstr("\"checkpoint\"")));
+
+  const auto before = folder_contents(out);
+  const auto r =
+      test::run_command("'" + k_cli + "' run --resume " + quoted(out) + " --quiet", scratch.path());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("holds no checkpoint of an interrupted run"));
+  EXPECT_EQ(folder_contents(out), before);
+}
+#endif
 
 // validate checks what run checks before its first step
 TEST_F(cosim_fmu_test, validate_refuses_what_run_would_refuse_before_stepping) {

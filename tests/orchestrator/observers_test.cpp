@@ -51,6 +51,44 @@ TEST(cosim_observers, csv_recorder_writes_full_names_and_every_type) {
             "1,0.4,-4,1,\"a,\"\"b\"\"\"\n");
 }
 
+// a resumed run continues the results file of its first part: the rows up to the moment it
+// continues from stay, later or incomplete rows go, and none is written twice
+TEST(cosim_observers, csv_recorder_continues_a_file_after_a_given_time) {
+  temp_dir dir("stride-test-");
+  const auto csv = dir.path() / "r.csv";
+  const auto run = [&](const std::string& before) {
+    std::ofstream(csv, std::ios::binary) << before;
+    execution ex(std::make_unique<fixed_step_algorithm>(250 * k_ms, algorithm_kind::gauss_seidel),
+                 time_point{}, quiet_log());
+    auto m = std::make_unique<mock_component>("m");
+    m->real("x", causality::output);
+    m->on_step = [](mock_component& self, time_point, duration h) {
+      self.r("x") += to_seconds(h);  // x = t
+      return step_result::complete;
+    };
+    ex.add_component(std::move(m));
+    auto recorder = csv_recorder::from_patterns(csv, ex, {"m.x"}, 500 * k_ms);
+    recorder->continue_after(time_point(std::chrono::seconds(1)));
+    ex.add_observer(recorder);
+    ex.simulate_until(time_point(std::chrono::seconds(2)));
+    ex.end();
+    std::ifstream in(csv, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  // the first part wrote a row after the moment (1.5) and half a row (2,9)
+  EXPECT_EQ(run("time,m.x\n0,0\n0.5,0.5\n1,1\n1.5,99\n2,9"),
+            "time,m.x\n0,0\n0.5,0.5\n1,1\n1.5,1.5\n2,2\n");
+  // another header: another recording, not continued
+  try {
+    run("time,m.y\n0,0\n");
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("its header is not that of the signals recorded now"));
+  }
+}
+
 TEST(cosim_observers, recording_interval_must_be_a_multiple_of_the_base_step) {
   execution ex(std::make_unique<fixed_step_algorithm>(10 * k_ms, algorithm_kind::gauss_seidel),
                time_point{}, quiet_log());

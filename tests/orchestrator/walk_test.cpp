@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "stride/cosim/archive.hpp"
+#include "stride/cosim/error.hpp"
 #include "stride/cosim/fmu.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_builder.hpp"
@@ -194,6 +195,69 @@ TEST(cosim_walk, a_whole_system_restored_repeats_its_steps_bit_for_bit) {
   ASSERT_EQ(again.size(), first.size());
   EXPECT_EQ(std::memcmp(again.data(), first.data(), first.size() * sizeof(double)), 0);
   EXPECT_GT(first[first.size() - 4], first[0]);  // it walked on
+}
+
+// what a run writes when it is interrupted (its checkpoint): the bytes continue the walk in
+// another execution of the same system, built afresh, bit for bit; another system is refused
+TEST(cosim_walk, a_whole_system_saved_as_bytes_continues_in_a_new_execution_bit_for_bit) {
+  auto system = parse_system_file(fs::path(STRIDE_SOURCE_DIR) / "models" / "walk.xml");
+  system.stop = time_point{} + parse_duration("4");
+  build_options o;
+  o.log = stderr_log_sink(log_level::warning);
+  const auto observe = [](execution& ex) {
+    std::vector<observed_variable> vars;
+    const auto robot = *ex.find_component("robot");
+    for (const char* v : {"base_x", "base_y", "base_z", "yaw"}) {
+      vars.push_back(ex.observe({robot, *ex.component_at(robot).model_description().index_of(v)}));
+    }
+    return vars;
+  };
+  const auto walk = [](execution& ex, const std::vector<observed_variable>& vars) {
+    std::vector<double> trace;
+    for (int k = 0; k < 125; ++k) {
+      ex.step();
+      for (const auto& v : vars) trace.push_back(ex.real_value(v));
+    }
+    return trace;
+  };
+  built_system first = build_system(system, o);
+  const auto first_vars = observe(*first.execution);
+  first.execution->initialize(first.stop);
+  for (int k = 0; k < 250; ++k) first.execution->step();  // 2 s
+  const std::vector<std::byte> saved = first.execution->save_state_bytes();
+  const std::vector<double> expected = walk(*first.execution, first_vars);
+
+  built_system second = build_system(system, o);
+  const auto second_vars = observe(*second.execution);
+  second.execution->initialize(second.stop);
+  second.execution->restore_state_bytes(saved);
+  EXPECT_EQ(second.execution->current_time(), time_point{} + parse_duration("2"));
+  EXPECT_EQ(second.execution->step_count(), 250);
+  const std::vector<double> again = walk(*second.execution, second_vars);
+  ASSERT_EQ(again.size(), expected.size());
+  EXPECT_EQ(std::memcmp(again.data(), expected.data(), expected.size() * sizeof(double)), 0);
+  EXPECT_GT(expected[expected.size() - 4], expected[0]);  // it walked on
+
+  auto renamed = system;
+  for (auto& c : renamed.components) {
+    if (c.name == "gait") c.name = "pattern";
+  }
+  for (auto& k : renamed.connections) {
+    for (auto* end : {&k.from, &k.to}) {
+      if (end->starts_with("gait.")) *end = "pattern." + end->substr(5);
+    }
+  }
+  built_system other = build_system(renamed, o);
+  other.execution->initialize(other.stop);
+  try {
+    other.execution->restore_state_bytes(saved);
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(std::string(e.what()), ::testing::HasSubstr("'gait'"));
+  }
+  // damaged bytes are refused, not read past their end
+  const std::vector<std::byte> cut(saved.begin(), saved.begin() + saved.size() / 2);
+  EXPECT_THROW(second.execution->restore_state_bytes(cut), validation_error);
 }
 
 }  // namespace

@@ -1,5 +1,9 @@
 #include "stride/learner/artefacts.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -259,23 +263,57 @@ std::FILE* artefact_writer::open(const std::string& name, const std::string& hea
                                  const std::map<std::string, std::uint64_t>* resume_sizes) {
   const fs::path file = dir_ / name;
   std::FILE* f = nullptr;
-  if (resume_sizes != nullptr && resume_sizes->count(name) && fs::exists(file)) {
-    // cut back to what the checkpoint had: rows after it are written again
-    std::error_code ec;
-    fs::resize_file(file, resume_sizes->at(name), ec);
-    if (ec) throw learner_error("cannot truncate " + file.string() + ": " + ec.message());
+  std::optional<std::uint64_t> cut;
+  if (resume_sizes != nullptr && fs::exists(file)) {
+    if (resume_sizes->count(name)) {
+      cut = resume_sizes->at(name);  // what the checkpoint had: rows after it are written again
+    } else {
+      std::ifstream in(file, std::ios::binary);
+      std::string first;
+      std::getline(in, first);
+      if (first == header) cut = header.size() + 1;  // no checkpoint yet: the header alone
+    }
+  }
+  if (cut) {
     f = std::fopen(file.c_str(), "ab");
   } else {
     f = std::fopen(file.c_str(), "wb");
     if (f != nullptr) std::fputs((header + "\n").c_str(), f);
   }
   if (f == nullptr) throw learner_error("cannot write " + file.string() + ": " + errno_text());
-  files_.push_back({name, f});
+  files_.push_back({name, f, cut});
   return f;
+}
+
+void artefact_writer::apply_cuts() {
+  for (auto& lf : files_) {
+    if (!lf.cut || lf.f == nullptr) continue;
+    const fs::path file = dir_ / lf.name;
+    struct stat st {};
+    if (std::fflush(lf.f) != 0 || ::fstat(::fileno(lf.f), &st) != 0) {
+      throw learner_error("cannot write " + file.string() + ": " + errno_text());
+    }
+    if (static_cast<std::uint64_t>(st.st_size) < *lf.cut) {
+      throw learner_error("cannot continue " + file.string() + ": it has " +
+                          std::to_string(st.st_size) + " bytes, the checkpoint expects " +
+                          std::to_string(*lf.cut));
+    }
+    if (::ftruncate(::fileno(lf.f), static_cast<off_t>(*lf.cut)) != 0) {
+      throw learner_error("cannot truncate " + file.string() + ": " + errno_text());
+    }
+    lf.cut.reset();
+  }
+}
+
+void artefact_writer::cut_back(const std::map<std::string, std::uint64_t>& sizes) {
+  for (auto& lf : files_) {
+    if (const auto it = sizes.find(lf.name); it != sizes.end()) lf.cut = it->second;
+  }
 }
 
 void artefact_writer::write(std::FILE* f, const std::string& line) {
   if (f == nullptr) return;
+  apply_cuts();
   if (std::fwrite(line.data(), 1, line.size(), f) != line.size()) {
     throw learner_error("cannot write to " + dir_.string() + ": " + errno_text());
   }
@@ -310,17 +348,24 @@ void artefact_writer::path_point(std::int64_t episode, std::int64_t rl_step, dou
 }
 
 std::map<std::string, std::uint64_t> artefact_writer::flush() {
+  apply_cuts();
   std::map<std::string, std::uint64_t> sizes;
   for (const auto& lf : files_) {
-    if (std::fflush(lf.f) != 0) {
+    struct stat st {};
+    if (std::fflush(lf.f) != 0 || ::fstat(::fileno(lf.f), &st) != 0) {
       throw learner_error("cannot write " + (dir_ / lf.name).string() + ": " + errno_text());
     }
-    sizes[lf.name] = static_cast<std::uint64_t>(std::ftell(lf.f));
+    sizes[lf.name] = static_cast<std::uint64_t>(st.st_size);
   }
   return sizes;
 }
 
 void artefact_writer::close() {
+  try {
+    apply_cuts();
+  } catch (const learner_error&) {
+    // closing (also from the destructor) must not throw: the logs stay as they are
+  }
   for (auto& lf : files_) {
     if (lf.f != nullptr) std::fclose(lf.f);
   }

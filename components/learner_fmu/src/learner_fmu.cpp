@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -374,8 +375,13 @@ class learner_model : public sdk::model_base<learner_data> {
     session_ = std::make_unique<session>(
         config_, data_.session, shared_ ? static_cast<value_table&>(*shared_) : values_, traces_);
     if (!out.empty()) {
+      // resumed without a checkpoint of its own: the logs are cut back to their headers, unless
+      // a state restored before the first row says otherwise (a run resumed by stride)
+      const std::map<std::string, std::uint64_t> none;
       writer_ = artefact_writer(fs::path(out), config_.grid, data_.log_steps,
-                                ck ? &ck->file_sizes : nullptr);
+                                ck               ? &ck->file_sizes
+                                : resume.empty() ? nullptr
+                                                 : &none);
     }
     if (!ck) {
       session_->start();
@@ -430,7 +436,8 @@ class learner_model : public sdk::model_base<learner_data> {
     writer_.close();
   }
 
-  // state = the data struct, then V and the traces
+  // state = the data struct, then V and the traces, then the sizes of the logs (so that a
+  // restored state continues them from its own moment, e.g. a run resumed by stride)
   std::vector<std::byte> save_state() const override {
     std::vector<std::byte> bytes = sdk::model_base<learner_data>::save_state();
     const auto put = [&bytes](const void* p, std::size_t n) {
@@ -446,6 +453,15 @@ class learner_model : public sdk::model_base<learner_data> {
       put(&s, sizeof s);
       put(&e.z, sizeof e.z);
       put(&e.v_start, sizeof e.v_start);
+    }
+    const auto sizes = writer_.active() ? writer_.flush() : std::map<std::string, std::uint64_t>{};
+    const std::uint64_t nf = sizes.size();
+    put(&nf, sizeof nf);
+    for (const auto& [name, size] : sizes) {
+      const std::uint64_t n = name.size();
+      put(&n, sizeof n);
+      put(name.data(), name.size());
+      put(&size, sizeof size);
     }
     return bytes;
   }
@@ -479,6 +495,17 @@ class learner_model : public sdk::model_base<learner_data> {
       e.state = static_cast<std::size_t>(s);
       z.entries.push_back(e);
     }
+    std::uint64_t nf = 0;
+    get(&nf, sizeof nf);
+    std::map<std::string, std::uint64_t> sizes;
+    for (std::uint64_t i = 0; i < nf; ++i) {
+      std::uint64_t n = 0;
+      get(&n, sizeof n);
+      if (n > bytes.size() - pos) throw sdk::model_error("learner state is truncated");
+      std::string name(n, '\0');
+      get(name.data(), n);
+      get(&sizes[name], sizeof(std::uint64_t));
+    }
     if (pos != bytes.size()) throw sdk::model_error("learner state has trailing bytes");
     const bool was_started = data_.started;
     sdk::model_base<learner_data>::restore_state(bytes.first(sizeof(learner_data)));
@@ -487,6 +514,7 @@ class learner_model : public sdk::model_base<learner_data> {
     }
     values_.values() = std::move(v);
     traces_ = std::move(z);
+    if (writer_.active() && !sizes.empty()) writer_.cut_back(sizes);
   }
 
  private:
@@ -740,7 +768,8 @@ class learner_model : public sdk::model_base<learner_data> {
   std::size_t next_snapshot_ = 0;
   eligibility_traces traces_;
   std::unique_ptr<session> session_;
-  artefact_writer writer_;
+  // mutable: save_state flushes the logs to put their sizes into the state
+  mutable artefact_writer writer_;
   std::vector<std::int64_t> snapshots_;
   std::chrono::steady_clock::time_point wall_start_{}, last_log_{};
   std::int64_t steps_at_start_ = 0;

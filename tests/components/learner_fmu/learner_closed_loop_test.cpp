@@ -142,6 +142,37 @@ TEST_F(learner_resume, a_killed_and_resumed_run_equals_an_uninterrupted_one) {
   EXPECT_THAT(read_all(killed / "manifest.json"), HasSubstr("\"resumed_from\""));
 }
 
+// SIGTERM in the middle of an episode, then `stride run --resume`: the whole system goes on from
+// that moment (not from the learner's last checkpoint), so results.csv continues as one series
+// and every file equals that of the uninterrupted run
+TEST_F(learner_resume, a_run_stopped_by_sigterm_and_resumed_equals_an_uninterrupted_one) {
+  const fs::path full = scratch.path() / "full", stopped = scratch.path() / "stopped";
+  auto r = stride("run -o " + test::quoted(full) + sets);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  // SIGTERM soon after the learner's first checkpoint, wherever the run then is
+  const std::string cli = "'" + std::string(STRIDE_CLI) + "'";
+  const std::string checkpoint = test::quoted(stopped / "checkpoint.bin");
+  r = test::run_command(cli + " run -o " + test::quoted(stopped) + sets +
+                            " & pid=$!; for i in $(seq 3000); do [ -f " + checkpoint +
+                            " ] && break; sleep 0.002; done; sleep 0.05; kill -TERM $pid; "
+                            "wait $pid",
+                        scratch.path());
+  ASSERT_EQ(r.exit_code, 128 + 15) << "the run was not stopped by SIGTERM: " << r.err;
+  ASSERT_TRUE(fs::exists(checkpoint_file(stopped)));
+  EXPECT_THAT(read_all(stopped / "manifest.json"), HasSubstr("\"interrupted_at\": "));
+  r = stride("run --resume " + test::quoted(stopped) + " --quiet --no-plots");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  for (const char* file : {"results.csv", "v_table.csv", "episodes.csv", "steps.csv", "paths.csv",
+                           "best.txt", "config.ini"}) {
+    const std::string a = read_all(full / file), b = read_all(stopped / file);
+    EXPECT_GT(count_lines(a), 1u) << file;
+    EXPECT_EQ(a, b) << file << " differs after the resume";
+  }
+  EXPECT_FALSE(fs::exists(stopped / "results-resumed.csv"));
+}
+
 TEST_F(learner_resume, resuming_a_system_without_resume_placeholder_is_an_error) {
   const fs::path dir = scratch.path() / "walk";
   fs::create_directories(dir);
@@ -188,7 +219,7 @@ TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
   fs::create_directories(scratch.path() / "empty");
   const auto empty = stride("plot " + test::quoted(scratch.path() / "empty"));
   EXPECT_EQ(empty.exit_code, 1);
-  EXPECT_THAT(empty.err, HasSubstr("no learner artefacts"));
+  EXPECT_THAT(empty.err, HasSubstr("nothing to plot"));
 }
 
 TEST_F(learner_resume, plot_of_unreadable_learner_files_is_an_error_and_leaves_no_empty_folder) {

@@ -13,6 +13,9 @@
  *   -> N x (DoStep, GetReal outputs) -> Terminate -> FreeInstance,
  * then checks that Instantiate with a wrong GUID returns NULL with a log message and that
  * functions of undeclared capabilities (FMU state, directional derivatives) return fmi2Error.
+ * When the FMU declares canGetAndSetFMUstate and canSerializeFMUstate, the state of the halfway
+ * step is serialized, the run goes on, and the deserialized state, set in the same instance and
+ * in a fresh one, must repeat the second half bit for bit (unless --no-compare).
  * --twice runs the lifecycle twice in a row (the second time with a trailing '/' on the
  * resource URI, as some importers pass it) and two instances side by side in the same process,
  * comparing all output traces with the first run (--no-compare skips the comparison).
@@ -164,6 +167,7 @@ typedef struct {
   double step_size;
   int only_once_per_process;
   int can_get_and_set_fmu_state;
+  int can_serialize_fmu_state;
   int provides_directional_derivative;
   fmi2ValueReference* outputs; /* valueReferences of Real outputs */
   size_t output_count;
@@ -523,6 +527,7 @@ static int read_model_description(const char* dir, model_info* info) {
   }
   info->only_once_per_process = attribute_is_true(tag, end, "canBeInstantiatedOnlyOncePerProcess");
   info->can_get_and_set_fmu_state = attribute_is_true(tag, end, "canGetAndSetFMUstate");
+  info->can_serialize_fmu_state = attribute_is_true(tag, end, "canSerializeFMUstate");
   info->provides_directional_derivative =
       attribute_is_true(tag, end, "providesDirectionalDerivative");
 
@@ -850,6 +855,97 @@ static int check_unsupported(const run_setup* s, const char* uri) {
   }
   s->api->fmi2FreeInstance(c);
   if (result == 0) printf("fmu_importer: undeclared capabilities return fmi2Error\n");
+  return result;
+}
+
+/* Steps `c` from step `from` to the end, comparing the outputs with `expected` (the first run). */
+static int continue_and_compare(const run_setup* s, fmi2Component c, const char* instance, int from,
+                                const double* expected, double* values) {
+  size_t n = s->info->output_count;
+  int step;
+  for (step = from; step < s->steps; ++step) {
+    if (do_step(s, c, instance, step, values) != 0) return 1;
+    if (n > 0 && memcmp(values, expected + (size_t)(step + 1) * n, n * sizeof *values) != 0) {
+      return fail(
+          "%s: after restoring the state of step %d the outputs at t=%g differ from the "
+          "first run",
+          instance, from, time_at(s, step + 1));
+    }
+  }
+  return 0;
+}
+
+/* A declared FMU state: saved halfway as bytes (fmi2SerializeFMUstate), the run goes on, then the
+ * bytes are deserialized and set, in the same instance and in a second, fresh one: both must
+ * repeat the second half of the first run bit for bit. */
+static int check_state_round_trip(const run_setup* s, const char* uri, const double* expected) {
+  const char* instance = "state_probe";
+  const char* target = "state_target";
+  size_t n = s->info->output_count;
+  int half = s->steps / 2;
+  int step;
+  int result = 0;
+  size_t size = 0;
+  fmi2Byte* bytes = NULL;
+  fmi2FMUstate state = NULL;
+  double* values = malloc((n > 0 ? n : 1) * sizeof *values);
+  fmi2Component c;
+  fmi2Component d = NULL;
+  if (!s->info->can_get_and_set_fmu_state || !s->info->can_serialize_fmu_state) {
+    free(values);
+    return 0;
+  }
+  if (values == NULL) return fail("out of memory");
+  c = instantiate(s, instance, uri);
+  if (c == NULL || initialize(s, c, instance) != 0) {
+    if (c != NULL) s->api->fmi2FreeInstance(c);
+    free(values);
+    return 1;
+  }
+  for (step = 0; step < half && result == 0; ++step) result = do_step(s, c, instance, step, values);
+  result = result ||
+           check_status(s->api->fmi2GetFMUstate(c, &state), "fmi2GetFMUstate", instance) ||
+           check_status(s->api->fmi2SerializedFMUstateSize(c, state, &size),
+                        "fmi2SerializedFMUstateSize", instance);
+  if (result == 0 && (bytes = malloc(size > 0 ? size : 1)) == NULL) result = fail("out of memory");
+  result = result ||
+           check_status(s->api->fmi2SerializeFMUstate(c, state, bytes, size),
+                        "fmi2SerializeFMUstate", instance) ||
+           check_status(s->api->fmi2FreeFMUstate(c, &state), "fmi2FreeFMUstate", instance) ||
+           continue_and_compare(s, c, instance, half, expected, values);
+  /* back to the saved moment in the same instance */
+  state = NULL;
+  result = result ||
+           check_status(s->api->fmi2DeSerializeFMUstate(c, bytes, size, &state),
+                        "fmi2DeSerializeFMUstate", instance) ||
+           check_status(s->api->fmi2SetFMUstate(c, state), "fmi2SetFMUstate", instance) ||
+           check_status(s->api->fmi2FreeFMUstate(c, &state), "fmi2FreeFMUstate", instance) ||
+           continue_and_compare(s, c, instance, half, expected, values);
+  /* and in a fresh instance, initialized as the first was */
+  if (result == 0) {
+    d = instantiate(s, target, uri);
+    state = NULL;
+    result = d == NULL || initialize(s, d, target) ||
+             check_status(s->api->fmi2DeSerializeFMUstate(d, bytes, size, &state),
+                          "fmi2DeSerializeFMUstate", target) ||
+             check_status(s->api->fmi2SetFMUstate(d, state), "fmi2SetFMUstate", target) ||
+             check_status(s->api->fmi2FreeFMUstate(d, &state), "fmi2FreeFMUstate", target) ||
+             continue_and_compare(s, d, target, half, expected, values);
+  }
+  free(bytes);
+  free(values);
+  if (result != 0) {
+    s->api->fmi2FreeInstance(c);
+    if (d != NULL) s->api->fmi2FreeInstance(d);
+    return 1;
+  }
+  result = finish(s, c, instance) || finish(s, d, target);
+  if (result == 0) {
+    printf(
+        "fmu_importer: FMU state of step %d serialized (%zu bytes) and restored, in the same "
+        "and in a fresh instance\n",
+        half, size);
+  }
   return result;
 }
 
@@ -1224,6 +1320,7 @@ int main(int argc, char** argv) {
   if (check_wrong_guid(&setup, uri) != 0) goto cleanup;
   printf("fmu_importer: wrong GUID rejected\n");
   if (check_unsupported(&setup, uri) != 0) goto cleanup;
+  if (compare && check_state_round_trip(&setup, uri, traces[0]) != 0) goto cleanup;
   if (twice) {
     if (run_lifecycle(&setup, "run_2", uri_slash, traces[1]) != 0) goto cleanup;
     if (compare && compare_traces(&setup, traces[0], traces[1], "run_2") != 0) goto cleanup;

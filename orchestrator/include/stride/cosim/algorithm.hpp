@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -89,6 +90,11 @@ class algorithm {
   /// to restore_state() of the same algorithm; see execution::save_state().
   virtual std::any save_state() const = 0;
   virtual void restore_state(const std::any& state) = 0;
+  /// A save_state() image as bytes (a run's checkpoint file), and back: only for an algorithm
+  /// set up with the same wiring. \throws validation_error for a state of another algorithm or
+  /// damaged bytes.
+  virtual std::vector<std::byte> state_to_bytes(const std::any& state) const = 0;
+  virtual std::any state_from_bytes(std::span<const std::byte> bytes) const = 0;
 
   /// Current value of an observed variable (the latest value of its component at a time ≤ the
   /// execution's time).
@@ -125,6 +131,8 @@ class fixed_step_algorithm final : public algorithm {
   step_outcome step(time_point t) override;
   std::any save_state() const override;
   void restore_state(const std::any& state) override;
+  std::vector<std::byte> state_to_bytes(const std::any& state) const override;
+  std::any state_from_bytes(std::span<const std::byte> bytes) const override;
   double real_value(std::size_t observed) const override;
   int integer_value(std::size_t observed) const override;
   bool boolean_value(std::size_t observed) const override;

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -124,6 +125,13 @@ class execution {
   /// Puts the system back to a saved moment: the steps that follow repeat, bit for bit, those
   /// that followed the save. Observers are not told (a recorder keeps its rows).
   void restore_state(const execution_state& state);
+  /// save_state() as bytes, for a file (a run's checkpoint): the step count, each component's
+  /// name and state, the algorithm's state, in host byte order.
+  std::vector<std::byte> save_state_bytes() const;
+  /// Restores save_state_bytes() of an execution of the same system (the same components in the
+  /// same order, the same wiring). \throws validation_error naming what differs, or for damaged
+  /// bytes.
+  void restore_state_bytes(std::span<const std::byte> bytes);
   /// Ends the run: observers are told, components terminated. Also done by the destructor.
   void end() noexcept;
   bool ended() const noexcept { return finished_; }

@@ -38,6 +38,12 @@ class csv_recorder : public observer {
                                                      std::optional<duration> interval = {});
   ~csv_recorder() override;
 
+  /// Continues `file` as an earlier part of the same run left it, instead of starting it anew:
+  /// its header must be the one this recorder writes, its rows up to `after` are kept (any later
+  /// or incomplete row is cut), and no row at or before `after` is written again. Call before
+  /// the execution is initialized. (A resumed run: stride/cosim/run.hpp.)
+  void continue_after(time_point after);
+
   void attach(execution& ex) override;
   void simulation_initialized(const execution& ex, time_point t) override;
   void step_complete(const execution& ex, std::int64_t step, time_point t) override;
@@ -48,6 +54,7 @@ class csv_recorder : public observer {
 
  private:
   void write_row(const execution& ex, time_point t);
+  void keep_rows_until(time_point after, const std::string& header);
   /// Writes the buffered rows; \throws error naming the file when the write fails.
   void flush();
 
@@ -59,6 +66,7 @@ class csv_recorder : public observer {
   std::string buffer_;
   std::size_t rows_ = 0;
   time_point last_row_{duration::min()};
+  std::optional<time_point> continue_after_;
 };
 
 /// Prints simulated time, real-time factor and ETA on a stream (stderr by default). On a

@@ -28,7 +28,11 @@ struct run_options {
   bool progress = true;                ///< progress display on stderr
   build_options build;
   /// Continue the run recorded in this folder: it becomes the output folder and `${resume}` in
-  /// parameter values is replaced by it (else by ""). The system must use `${resume}` somewhere.
+  /// parameter values is replaced by it (else by ""). When the folder holds the checkpoint of an
+  /// interrupted run (checkpoint_file), the whole system goes on from the moment it was
+  /// interrupted: simulated time continues and the results file is continued, so that the two
+  /// parts form the rows of one run. Otherwise the run starts over and the system must use
+  /// `${resume}` somewhere (components that continue from checkpoints of their own).
   std::filesystem::path resume_dir;
   /// Replaces the system's results file name (e.g. to keep the file of an interrupted run).
   std::optional<std::string> record_file;
@@ -36,8 +40,9 @@ struct run_options {
   std::vector<std::string> record_signals;
   /// ... and this interval (a multiple of the base step).
   std::optional<duration> record_interval;
-  /// Checked between steps: once set, the run ends there, with what was recorded written and a
-  /// manifest that says "interrupted" (e.g. set by SIGINT).
+  /// Checked between steps: once set, the run ends there, with what was recorded written, a
+  /// manifest that says "interrupted" and when ("interrupted_at", seconds), and the state of every
+  /// component in checkpoint_file() for `resume_dir` (e.g. set by SIGINT).
   const std::atomic<bool>* interrupt = nullptr;
   /// Build, check and initialize everything as for the run, then end before the first step
   /// (`stride validate`): no manifest is written.
@@ -72,6 +77,18 @@ struct run_report {
   double real_time_factor = 0;
   std::string error;  ///< non-empty if the run failed (then also thrown)
 };
+
+/// The file in a run's folder with the state of the whole system at the moment the run was
+/// interrupted (run_options::interrupt); a run that finishes removes it.
+std::filesystem::path checkpoint_file(const std::filesystem::path& run_dir);
+
+/// What manifest.json in a run's folder says ("" for what it does not say or a missing file).
+struct run_status {
+  std::string status;    ///< "ok", "interrupted", "error" (agents: also "partial")
+  std::string end_time;  ///< seconds, as written
+  std::string ended_by;
+};
+run_status read_run_status(const std::filesystem::path& run_dir);
 
 /// A results file name not yet in `dir` ("results-resumed.csv", "results-resumed-2.csv" ...), so
 /// that an interrupted run's results stay as they are when it is resumed.

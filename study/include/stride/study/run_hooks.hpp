@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string_view>
+#include <vector>
 
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_structure.hpp"
@@ -18,8 +19,11 @@ void check_before_run(const cosim::system_structure& system);
 /// `figures`) the PNGs of the learner runs in the output folder. Nothing for other systems.
 void report_after_run(const cosim::run_report& report, bool quiet, bool figures);
 
-/// `stride plot RUN_DIR`: figures and summary. Returns the exit code.
-int plot(const std::filesystem::path& run_dir, bool quiet);
+/// The study's part of `stride plot RUN_DIR`: when the folder (or one right below it) holds
+/// learner files, their figures (figures.hpp) and, unless `quiet`, the summary. Returns the PNGs
+/// written (none for other runs).
+std::vector<std::filesystem::path> plot_learner_runs(const std::filesystem::path& run_dir,
+                                                     bool quiet);
 
 /// The default scenario of `stride run`: Experiment 1 at demo scale
 /// (models/experiments/demo.xml, embedded at build time), and its name for messages.

@@ -74,10 +74,14 @@ void write_value_table(const std::filesystem::path& file, const state_grid& grid
 
 /// Appends rows to the run's CSV logs; each file gets its header when created. On resume the
 /// files are cut back to the sizes recorded in the checkpoint, so rows written after it vanish.
+/// The cut is made before the first row is written (or flush/close), so that a saved state
+/// restored in between (cut_back) can still keep the rows up to its own moment.
 class artefact_writer {
  public:
   artefact_writer() = default;
-  /// Opens (creating `dir`) the logs. `resume_sizes` empty: new files (existing ones replaced).
+  /// Opens (creating `dir`) the logs. `resume_sizes` null: new files (existing ones replaced);
+  /// else existing logs are continued, cut back to their size in the map (absent: to the header
+  /// alone, as if new).
   artefact_writer(std::filesystem::path dir, const state_grid& grid, bool log_steps,
                   const std::map<std::string, std::uint64_t>* resume_sizes);
   ~artefact_writer();
@@ -95,13 +99,18 @@ class artefact_writer {
                   bool fallen);
   /// Flushes every log and returns their sizes (for the checkpoint).
   std::map<std::string, std::uint64_t> flush();
+  /// Cuts the logs back to `sizes` (as flush returned them at a saved moment) before the next
+  /// row; logs not in the map stay as they are. \throws learner_error when a log is shorter.
+  void cut_back(const std::map<std::string, std::uint64_t>& sizes);
   void close();
 
  private:
   struct log_file {
     std::string name;
     std::FILE* f = nullptr;
+    std::optional<std::uint64_t> cut;  ///< pending: the size to cut the file back to
   };
+  void apply_cuts();
   std::FILE* open(const std::string& name, const std::string& header,
                   const std::map<std::string, std::uint64_t>* resume_sizes);
   void write(std::FILE* f, const std::string& line);

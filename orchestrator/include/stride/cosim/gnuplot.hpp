@@ -1,17 +1,19 @@
-// Small helpers for the study's gnuplot figures: numbers and strings as gnuplot reads them, and
-// running a script.
-#ifndef STRIDE_STUDY_SRC_GNUPLOT_HPP
-#define STRIDE_STUDY_SRC_GNUPLOT_HPP
+// Small helpers for figures drawn with gnuplot: numbers and strings as gnuplot reads them, and
+// running a script. Used by `stride plot` (run_plots.hpp) and by applications' own figures.
+#ifndef STRIDE_COSIM_GNUPLOT_HPP
+#define STRIDE_COSIM_GNUPLOT_HPP
 
 #include <filesystem>
 #include <string>
 
-namespace stride::study::gnuplot {
+namespace stride::cosim::gnuplot {
+
+/// The terminal every figure uses: PNG (pngcairo), 960x680, no enhanced text.
+inline constexpr const char* k_png_terminal =
+    "set terminal pngcairo size 960,680 noenhanced font ',11'\n";
 
 /// Shortest text that reads back as `v`; "NaN" (which gnuplot leaves blank) for NaN.
 std::string num(double v);
-/// " (ms)" / " (mm)" for the gait parameters a study axis is named after, else "".
-std::string unit_of(const std::string& parameter);
 /// A gnuplot single-quoted string.
 std::string quote(const std::string& s);
 /// \throws std::runtime_error naming the file when it cannot be written.
@@ -20,6 +22,6 @@ void write_text(const std::filesystem::path& file, const std::string& text);
 /// Debian package) or fails (with its messages).
 void run(const std::filesystem::path& script);
 
-}  // namespace stride::study::gnuplot
+}  // namespace stride::cosim::gnuplot
 
-#endif  // STRIDE_STUDY_SRC_GNUPLOT_HPP
+#endif  // STRIDE_COSIM_GNUPLOT_HPP

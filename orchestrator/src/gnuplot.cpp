@@ -1,4 +1,4 @@
-#include "gnuplot.hpp"
+#include "stride/cosim/gnuplot.hpp"
 
 #include <sys/wait.h>
 
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace stride::study::gnuplot {
+namespace stride::cosim::gnuplot {
 
 namespace fs = std::filesystem;
 
@@ -18,15 +18,6 @@ std::string num(double v) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
-}
-
-std::string unit_of(const std::string& parameter) {
-  if (parameter == "period_time") return " (ms)";
-  if (parameter.find("swing") != std::string::npos ||
-      parameter.find("height") != std::string::npos ||
-      parameter.find("offset") != std::string::npos)
-    return " (mm)";
-  return "";
 }
 
 std::string quote(const std::string& s) {
@@ -64,4 +55,4 @@ void run(const fs::path& script) {
   fs::remove(err);
 }
 
-}  // namespace stride::study::gnuplot
+}  // namespace stride::cosim::gnuplot
