@@ -227,6 +227,9 @@ run_report run_system(system_structure system, const run_options& options) {
   report.manifest_file = report.output_dir / "manifest.json";
 
   auto& ex = *built.execution;
+  // the run's wall clock, told first of all observers that the simulation ended
+  const auto timer = std::make_shared<wall_timer>();
+  ex.add_observer(timer);
   if (system.record.enabled) {
     report.results_file = report.output_dir / system.record.file;
     std::vector<variable_id> vars;
@@ -252,22 +255,25 @@ run_report run_system(system_structure system, const run_options& options) {
       throw validation_error((where.empty() ? "" : where + ": ") + e.what());
     }
   }
-  if (options.progress) ex.add_observer(std::make_shared<progress_display>(built.stop));
+  if (options.progress) {
+    ex.add_observer(std::make_shared<progress_display>(built.stop, stderr, std::nullopt,
+                                                       std::chrono::seconds(5), timer));
+  }
 
   manifest_data m{&system, &built, &report, utc_now(),
                   resuming ? fs::absolute(options.resume_dir).string() : std::string()};
-  const auto wall_start = std::chrono::steady_clock::now();
+  // the figures the progress display showed last: one timer, one definition
   auto finish_report = [&] {
-    report.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    const double simulated = to_seconds(report.result.end_time - system.start);
-    report.real_time_factor = report.wall_seconds > 0 ? simulated / report.wall_seconds : 0.0;
+    report.wall_seconds = timer->seconds();
+    report.real_time_factor =
+        real_time_factor(report.result.end_time - system.start, report.wall_seconds);
   };
   if (options.initialize_only) {
     ex.initialize(built.stop);
     ex.end();
     return report;
   }
+  timer->start();  // initialization is part of the run's wall time
   try {
     report.result = ex.simulate_until(built.stop, options.interrupt);
     ex.end();

@@ -68,9 +68,11 @@ struct run_report {
   std::filesystem::path results_file;  ///< empty if recording is disabled
   std::filesystem::path manifest_file;
   run_result result;
+  /// from the start of initialization to the end of the simulation (components' termination
+  /// not included), as the progress display counts it
   double wall_seconds = 0;
-  double real_time_factor = 0;
-  std::string error;  ///< non-empty if the run failed (then also thrown)
+  double real_time_factor = 0;  ///< simulated time / wall_seconds (cosim::real_time_factor)
+  std::string error;            ///< non-empty if the run failed (then also thrown)
 };
 
 /// A results file name not yet in `dir` ("results-resumed.csv", "results-resumed-2.csv" ...), so
