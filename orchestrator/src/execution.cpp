@@ -140,6 +140,7 @@ void execution::set_start_value(variable_id id, scalar_value value, const std::s
       break;
   }
   s.refs.add(v.type, v.reference);
+  start_origins_.emplace_back(id, origin);
 }
 
 void execution::add_group(std::vector<std::size_t> members, std::unique_ptr<step_group> group) {
@@ -180,6 +181,17 @@ void execution::freeze() {
   if (components_.empty()) throw validation_error("the system has no components");
   const component_declarations d = declarations();
   validate_connections(d, connections_, log_);
+  // the connection sets a driven variable at initialization: a value given to it would be lost
+  for (const auto& [id, origin] : start_origins_) {
+    for (const auto& c : connections_) {
+      if (!(c.to == id)) continue;
+      throw validation_error(
+          (origin.empty() ? "" : origin + ": ") + full_name(id) +
+          " is given a value, but the connection " + full_name(c.from) + " -> " + full_name(c.to) +
+          (c.options.origin.empty() ? "" : " (" + c.options.origin + ")") +
+          " drives it and would overwrite it: remove the value or the connection");
+    }
+  }
   system_wiring w;
   for (const auto& c : components_) w.components.push_back(c.get());
   w.step_multiples = multiples_;

@@ -90,12 +90,16 @@ class execution {
   const std::vector<std::vector<std::size_t>>& groups() const noexcept { return group_members_; }
   /// Connects an output to an input (or parameter). Checked in freeze().
   void connect(variable_id from, variable_id to, connection_options options = {});
-  /// Value set before initialization (parameters, start values of inputs).
-  /// \throws validation_error if the variable cannot be set or the value has the wrong type.
+  /// Value set before initialization (parameters, start values of inputs). `origin` ("file:line",
+  /// "--set comp.var=value") prefixes errors, also freeze()'s when a connection drives the
+  /// variable. \throws validation_error if the variable cannot be set or the value has the wrong
+  /// type.
   void set_start_value(variable_id var, scalar_value value, const std::string& origin = {});
 
   /// Validates and fixes the topology. \throws validation_error with every message naming
-  /// components, variables and connection origins; an algebraic loop is spelled out.
+  /// components, variables and connection origins; an algebraic loop is spelled out; a value
+  /// given to a variable that a connection drives (the connection would overwrite it at
+  /// initialization) is refused naming both.
   void freeze();
   bool frozen() const noexcept { return frozen_; }
 
@@ -169,6 +173,7 @@ class execution {
   std::vector<int> multiples_;
   std::vector<connection> connections_;
   std::vector<start_values> starts_;
+  std::vector<std::pair<variable_id, std::string>> start_origins_;  ///< what set_start_value set
   std::vector<std::size_t> order_;
   std::vector<std::shared_ptr<observer>> observers_;
   time_point start_;
