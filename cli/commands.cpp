@@ -104,6 +104,7 @@ int run(const run_arguments& args, const run_extension& extension) {
   // joins the DDS domain only when a component has a worker
   options.build.placements.push_back(std::make_shared<remote::remote_placement>(args.dds, limits));
   options.record_signals = args.signals;
+  options.force_output = args.force;
   options.interrupt = &catch_stop_signals();
   if (args.record_interval) {
     try {

@@ -28,6 +28,7 @@ struct run_arguments {
   int threads = 1;                   ///< --threads
   std::vector<std::string> signals;  ///< --signals: record these instead of the system's
   std::optional<std::string> record_interval;
+  bool force = false;                    ///< --force: write into a non-empty output folder
   std::filesystem::path save_reference;  ///< --save-reference: a copy of the results CSV
   remote::dds_settings dds;              ///< where components with a worker are looked for
   double worker_timeout = 10;            ///< seconds to wait for a worker to appear

@@ -30,7 +30,11 @@ int main(int argc, char** argv) {
   run->add_option("system", system_file, "System XML file")->check(CLI::ExistingFile);
   run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
   run->add_option("--output,-o", run_args.output,
-                  "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>)");
+                  "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>); an existing "
+                  "one must be empty, unless --force");
+  run->add_flag("--force", run_args.force,
+                "Write into an existing non-empty output folder (files of the same name are "
+                "replaced)");
   run->add_option("--set", run_args.sets, "Parameter or input start value: comp.var=value")
       ->allow_extra_args(false);
   run->add_flag("--quiet,-q", run_args.quiet, "No progress display, only warnings and errors");

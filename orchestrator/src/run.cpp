@@ -163,10 +163,24 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
 }
 
 void check_output_folder_free(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) {
+    throw validation_error("output folder " + dir.string() + " is a file, not a folder");
+  }
   if (fs::exists(dir / "system.xml")) {
     throw validation_error("output folder " + dir.string() +
                            " holds an earlier run (its system.xml): choose another --output, "
-                           "remove it, or continue it with --resume");
+                           "remove it, continue it with --resume, or replace its files with "
+                           "--force");
+  }
+  fs::directory_iterator entries(dir, ec);
+  if (ec) throw validation_error("output folder " + dir.string() + ": " + ec.message());
+  if (entries != fs::directory_iterator()) {
+    throw validation_error("output folder " + dir.string() + " is not empty (it holds " +
+                           entries->path().filename().string() +
+                           "): choose another --output, empty it, or write into it anyway with "
+                           "--force");
   }
 }
 
@@ -201,7 +215,9 @@ run_report run_system(system_structure system, const run_options& options) {
   } else {
     report.output_dir =
         options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
-    if (!options.initialize_only) check_output_folder_free(report.output_dir);
+    if (!options.initialize_only && !options.force_output) {
+      check_output_folder_free(report.output_dir);
+    }
   }
   // system.xml keeps the placeholders (as_written above), so it can be run (resumed) again
   const std::size_t resume_uses = substitute_placeholders(

@@ -23,6 +23,9 @@ struct run_options {
   /// output folder; empty = ./stride-out/<system-name>-<YYYYmmdd-HHMMSS> (suffixed -2, -3 … if
   /// it exists)
   std::filesystem::path output_dir;
+  /// Write into an output folder that exists and is not empty (`--force`; files of the same
+  /// name are replaced). Without it such a folder is refused (check_output_folder_free).
+  bool force_output = false;
   std::vector<std::string> overrides;  ///< "comp.var=value", applied in order
   std::optional<time_point> stop;      ///< replaces the system's stop time
   bool progress = true;                ///< progress display on stderr
@@ -79,8 +82,9 @@ struct run_report {
 /// that an interrupted run's results stay as they are when it is resumed.
 std::string fresh_results_name(const std::filesystem::path& dir, const std::string& name);
 
-/// \throws validation_error when `dir` holds an earlier run (its system.xml, which every run
-/// writes first): a new run there would overwrite it without a word.
+/// \throws validation_error when `dir` exists and is not an empty folder: a file, an earlier run
+/// (its system.xml, which every run writes first) or anything else a new run would mix its files
+/// with or overwrite without a word. The message names the folder and, for a run, says so.
 void check_output_folder_free(const std::filesystem::path& dir);
 
 /// The default output folder name for a system, relative to the working directory.
@@ -89,7 +93,8 @@ std::filesystem::path default_output_dir(const system_structure& system);
 /// A system with <agents> is run by run_agents (one call of this per agent); here it is an
 /// error, except for `initialize_only` (one agent is checked).
 /// Applies overrides, expands replica groups, substitutes placeholders, builds, creates the
-/// output folder (refused when it holds an earlier run, except to resume it), writes `system.xml`
+/// output folder (refused when it exists and is not empty, except to resume it or with
+/// `force_output`), writes `system.xml`
 /// (with overrides; groups and placeholders kept), records, runs and writes `manifest.json` (with
 /// every parameter value the system sets). On a run-time error the results so far and a manifest
 /// with "status": "error" are written and the error is rethrown.
