@@ -50,8 +50,13 @@ int main(int argc, char** argv) {
                   "identical for any count)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  run->add_option("--signals", run_args.signals,
-                  "Record these signals (comp.var patterns with * and ?) instead of the system's")
+  run->add_option("--record,--signals", run_args.signals,
+                  "Record these signals instead of the system's: comp.var patterns with * and ?, "
+                  "separated by commas (e.g. 'robot.base_*,gait.phase'); may be repeated")
+      ->allow_extra_args(false);
+  run->add_option("--stop-when", run_args.stop_when,
+                  "End the run when this output (comp.var; Boolean, Integer or Real) becomes "
+                  "true or non-zero, e.g. robot.fallen; may be repeated")
       ->allow_extra_args(false);
   std::string record_interval;
   run->add_option("--record-interval", record_interval,

@@ -220,6 +220,46 @@ void execution::add_observer(std::shared_ptr<observer> obs) {
   observers_.push_back(std::move(obs));
 }
 
+void execution::stop_when(variable_id id) {
+  if (initialized_) throw validation_error("cannot add a stop condition after initialize()");
+  check_variable(id, {});
+  const auto& v = components_[id.component]->model_description().variables[id.variable];
+  const std::string name = full_name(id);
+  if (v.causality != causality::output) {
+    throw validation_error(name + " is " + std::string(to_string(v.causality)) +
+                           "; a stop condition needs an output");
+  }
+  if (exchange_type(v.type) == variable_type::string) {
+    throw validation_error(name +
+                           " is a String output; a stop condition needs a Boolean, "
+                           "Integer or Real output");
+  }
+  for (const auto& c : stop_conditions_) {
+    if (c.id == id) return;
+  }
+  stop_conditions_.push_back(observe(id));
+}
+
+const observed_variable* execution::stop_condition_met() const {
+  for (const auto& c : stop_conditions_) {
+    switch (c.type) {
+      case variable_type::boolean:
+        if (boolean_value(c)) return &c;
+        break;
+      case variable_type::integer:
+      case variable_type::enumeration:
+        if (integer_value(c) != 0) return &c;
+        break;
+      case variable_type::real:
+        if (real_value(c) != 0.0) return &c;
+        break;
+      case variable_type::string:
+        break;
+    }
+  }
+  return nullptr;
+}
+
 std::optional<std::size_t> execution::find_component(std::string_view name) const noexcept {
   for (std::size_t i = 0; i < components_.size(); ++i) {
     if (components_[i]->name() == name) return i;
@@ -315,17 +355,25 @@ run_result execution::simulate_until(time_point stop, const std::atomic<bool>* i
   if (!initialized_) initialize(stop);
   run_result result;
   const duration h = algo_->base_step();
+  const auto condition_met = [&] {
+    const observed_variable* met = stop_condition_met();
+    if (met != nullptr) result.stopped_by = full_name(met->id);
+    return met != nullptr;
+  };
   try {
-    while (now_ + h <= stop) {
-      if (interrupt != nullptr && interrupt->load(std::memory_order_relaxed)) {
-        result.interrupted = true;
-        break;
-      }
-      const step_outcome outcome = step();
-      if (outcome.terminated) {
-        result.terminated_by_component = true;
-        result.terminated_by = components_[outcome.terminated_by]->name();
-        break;
+    if (!condition_met()) {
+      while (now_ + h <= stop) {
+        if (interrupt != nullptr && interrupt->load(std::memory_order_relaxed)) {
+          result.interrupted = true;
+          break;
+        }
+        const step_outcome outcome = step();
+        if (outcome.terminated) {
+          result.terminated_by_component = true;
+          result.terminated_by = components_[outcome.terminated_by]->name();
+          break;
+        }
+        if (condition_met()) break;
       }
     }
   } catch (const std::exception& e) {
@@ -334,7 +382,7 @@ run_result execution::simulate_until(time_point stop, const std::atomic<bool>* i
   }
   result.end_time = now_;
   result.steps = steps_;
-  if (result.terminated_by_component) finish(result.end_time, {});
+  if (result.terminated_by_component || !result.stopped_by.empty()) finish(result.end_time, {});
   return result;
 }
 

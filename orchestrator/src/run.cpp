@@ -55,13 +55,22 @@ std::string manifest_json(const manifest_data& m) {
   }
   j << "  \"end_time\": " << format_seconds(r.result.end_time) << ",\n";
   j << "  \"steps\": " << r.result.steps << ",\n";
-  j << "  \"ended_by\": "
-    << json_string(r.result.terminated_by_component
-                       ? "component " + r.result.terminated_by + " requested termination"
-                   : !r.error.empty()     ? "error"
-                   : r.result.interrupted ? "interrupted"
-                                          : "stop time")
-    << ",\n";
+  j << "  \"ended_by\": " << json_string(r.error.empty() ? end_reason(r.result) : "error") << ",\n";
+  // the same as data: what ended the run and when
+  const run_result& e = r.result;
+  j << "  \"stop_reason\": {\"kind\": "
+    << json_string(!r.error.empty()            ? "error"
+                   : e.terminated_by_component ? "component"
+                   : !e.stopped_by.empty()     ? "condition"
+                   : e.interrupted             ? "interrupted"
+                                               : "stop_time");
+  if (r.error.empty() && e.terminated_by_component) {
+    j << ", \"component\": " << json_string(e.terminated_by);
+  }
+  if (r.error.empty() && !e.stopped_by.empty()) {
+    j << ", \"variable\": " << json_string(e.stopped_by);
+  }
+  j << ", \"time\": " << format_seconds(e.end_time) << "},\n";
   j << "  \"wall_time_s\": " << json_number(r.wall_seconds) << ",\n";
   j << "  \"real_time_factor\": " << json_number(r.real_time_factor) << ",\n";
   // every value the system sets, so that a run can be told apart from another (seeds included)
@@ -93,6 +102,14 @@ std::string manifest_json(const manifest_data& m) {
 }
 
 }  // namespace
+
+std::string end_reason(const run_result& result) {
+  if (result.terminated_by_component) {
+    return "component " + result.terminated_by + " requested termination";
+  }
+  if (!result.stopped_by.empty()) return result.stopped_by;
+  return result.interrupted ? "interrupted" : "stop time";
+}
 
 fs::path default_output_dir(const system_structure& system) {
   const std::time_t t = std::time(nullptr);
@@ -232,23 +249,18 @@ run_report run_system(system_structure system, const run_options& options) {
   if (!options.record_signals.empty()) {
     system.record.enabled = true;
     system.record.signals = options.record_signals;
-    system.record.signal_locations.clear();
+    system.record.signal_locations.assign(options.record_signals.size(),
+                                          source_location{"--record", 0});
   }
   if (options.record_interval) system.record.interval = *options.record_interval;
 
   report.system = system;
   built_system built = build_system(system, options.build);
-  fs::create_directories(report.output_dir);
-  write_file(report.output_dir / "system.xml", to_xml(as_written));
-  report.manifest_file = report.output_dir / "manifest.json";
-
   auto& ex = *built.execution;
-  // the run's wall clock, told first of all observers that the simulation ended
-  const auto timer = std::make_shared<wall_timer>();
-  ex.add_observer(timer);
+
+  // what to record and when to stop, checked before anything is written
+  std::vector<variable_id> recorded;
   if (system.record.enabled) {
-    report.results_file = report.output_dir / system.record.file;
-    std::vector<variable_id> vars;
     for (std::size_t i = 0; i < system.record.signals.size(); ++i) {
       const auto& pattern = system.record.signals[i];
       const auto found = find_variables(ex, pattern);
@@ -260,12 +272,56 @@ run_report run_system(system_structure system, const run_options& options) {
                                "' matches no variable");
       }
       for (const auto& v : found) {
-        if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
+        if (std::find(recorded.begin(), recorded.end(), v) == recorded.end()) recorded.push_back(v);
       }
     }
+    if (const auto& interval = system.record.interval;
+        interval && (*interval <= duration::zero() || *interval % built.base_step != duration{})) {
+      const std::string where =
+          options.record_interval ? std::string("--record-interval") : system.record.where.str();
+      throw validation_error((where.empty() ? "" : where + ": ") + "recording interval " +
+                             format_seconds(*interval) +
+                             " s is not a positive multiple of the base step " +
+                             format_seconds(built.base_step) + " s");
+    }
+  }
+  for (const auto& pattern : options.stop_when) {
+    const std::string what = "--stop-when '" + pattern + "': ";
+    const auto found = find_variables(ex, pattern);
+    if (found.empty()) throw validation_error(what + "names no variable");
+    const bool wildcard = pattern.find_first_of("*?") != std::string::npos;
+    std::size_t conditions = 0;
+    for (const auto& v : found) {
+      const auto& var = ex.component_at(v.component).model_description().variables[v.variable];
+      // a wildcard takes the outputs it matches that can be conditions
+      if (wildcard && (var.causality != causality::output ||
+                       exchange_type(var.type) == variable_type::string)) {
+        continue;
+      }
+      try {
+        ex.stop_when(v);
+        ++conditions;
+      } catch (const validation_error& e) {
+        throw validation_error(what + e.what());
+      }
+    }
+    if (conditions == 0) {
+      throw validation_error(what + "matches no Boolean, Integer or Real output");
+    }
+  }
+
+  fs::create_directories(report.output_dir);
+  write_file(report.output_dir / "system.xml", to_xml(as_written));
+  report.manifest_file = report.output_dir / "manifest.json";
+
+  // the run's wall clock, told first of all observers that the simulation ended
+  const auto timer = std::make_shared<wall_timer>();
+  ex.add_observer(timer);
+  if (system.record.enabled) {
+    report.results_file = report.output_dir / system.record.file;
     try {
       ex.add_observer(
-          std::make_shared<csv_recorder>(report.results_file, vars, system.record.interval));
+          std::make_shared<csv_recorder>(report.results_file, recorded, system.record.interval));
     } catch (const validation_error& e) {
       const std::string where = system.record.where.str();
       throw validation_error((where.empty() ? "" : where + ": ") + e.what());

@@ -268,6 +268,22 @@ TEST_F(cosim_fmu_test, fmu_requested_stop_ends_the_run_cleanly) {
   EXPECT_EQ(read_lines(report.results_file).size(), 1u + 5u);  // header, t = 0 .. 0.04
   EXPECT_THAT(read_text(report.manifest_file),
               HasSubstr("\"ended_by\": \"component a requested termination\""));
+  EXPECT_THAT(read_text(report.manifest_file),
+              HasSubstr("\"stop_reason\": {\"kind\": \"component\", \"component\": \"a\", "
+                        "\"time\": 0.04}"));
+}
+
+TEST_F(cosim_fmu_test, a_stop_condition_ends_the_run_and_the_manifest_names_it) {
+  auto o = options("condition");
+  o.stop_when = {"b.count*"};  // b.counter = 1 + a.counter each step: non-zero after the first
+  const auto report = run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+  EXPECT_EQ(report.result.stopped_by, "b.counter");
+  EXPECT_EQ(report.result.steps, 1);
+  EXPECT_EQ(end_reason(report.result), "b.counter");
+  EXPECT_THAT(read_text(report.manifest_file),
+              HasSubstr("\"stop_reason\": {\"kind\": \"condition\", \"variable\": "
+                        "\"b.counter\", \"time\": 0.01}"));
+  EXPECT_EQ(read_lines(report.results_file).size(), 1u + 2u);  // header, t = 0, 0.01
 }
 
 TEST_F(cosim_fmu_test, fmu_error_names_component_function_and_time_and_keeps_results) {

@@ -60,6 +60,8 @@ struct run_result {
   bool terminated_by_component = false;
   std::string terminated_by;  ///< component name when terminated_by_component
   bool interrupted = false;   ///< ended early because the interrupt flag was set
+  /// "comp.var" of the stop condition (execution::stop_when) that ended the run; empty if none
+  std::string stopped_by;
 };
 
 /// The complete state of an initialized execution: every component's FMU state and what the
@@ -107,6 +109,11 @@ class execution {
   observed_variable observe(variable_id var);
   /// \throws validation_error after initialize().
   void add_observer(std::shared_ptr<observer> obs);
+  /// A stop condition: simulate_until ends at the first communication point (the start time
+  /// included) at which this output is true (Boolean) or non-zero (Integer, Real), and
+  /// run_result::stopped_by names it. \throws validation_error after initialize(), or naming the
+  /// variable when it is not an output of type Boolean, Integer, Enumeration or Real.
+  void stop_when(variable_id var);
 
   /// Freezes if needed and initializes the components; `stop` is passed to them.
   void initialize(std::optional<time_point> stop);
@@ -115,10 +122,11 @@ class execution {
   /// One base step (initializes first if needed); observers are told.
   /// \throws component_error naming component, function and time.
   step_outcome step();
-  /// Steps until `stop` (ends at the last communication point ≤ stop) or until a component
-  /// requests termination. Initializes first if needed; may be called again with a later stop.
-  /// On an error or a termination request the execution ends: observers are told (recorders
-  /// flush), components are terminated, and an error is rethrown.
+  /// Steps until `stop` (ends at the last communication point ≤ stop), until a component
+  /// requests termination or until a stop condition (stop_when) holds. Initializes first if
+  /// needed; may be called again with a later stop. On an error, a termination request or a stop
+  /// condition the execution ends: observers are told (recorders flush), components are
+  /// terminated, and an error is rethrown.
   /// `interrupt`, when given, is checked between steps: once set, the run ends there as at the
   /// stop time (set from a signal handler, for instance).
   run_result simulate_until(time_point stop, const std::atomic<bool>* interrupt = nullptr);
@@ -164,6 +172,8 @@ class execution {
   void check_variable(variable_id id, const std::string& context) const;
   void finish(time_point t, const std::string& error) noexcept;
   void terminate_components() noexcept;
+  /// the first stop condition that holds now, or nullptr
+  const observed_variable* stop_condition_met() const;
 
   std::unique_ptr<stride::cosim::algorithm> algo_;
   log_sink log_;
@@ -176,6 +186,7 @@ class execution {
   std::vector<std::pair<variable_id, std::string>> start_origins_;  ///< what set_start_value set
   std::vector<std::size_t> order_;
   std::vector<std::shared_ptr<observer>> observers_;
+  std::vector<observed_variable> stop_conditions_;
   time_point start_;
   time_point now_;
   std::int64_t steps_ = 0;

@@ -19,6 +19,10 @@ namespace stride::cosim {
 /// The library version ("0.1.0").
 std::string_view version() noexcept;
 
+/// What ended a run that did not fail, for people: "stop time", "interrupted", the stop
+/// condition "comp.var" that held, or "component NAME requested termination".
+std::string end_reason(const run_result& result);
+
 struct run_options {
   /// output folder; empty = ./stride-out/<system-name>-<YYYYmmdd-HHMMSS> (suffixed -2, -3 … if
   /// it exists)
@@ -39,6 +43,12 @@ struct run_options {
   std::vector<std::string> record_signals;
   /// ... and this interval (a multiple of the base step).
   std::optional<duration> record_interval;
+  /// Stop conditions, "comp.var" (or patterns with * and ?: the Boolean, Integer and Real
+  /// outputs they match): the
+  /// run ends at the first communication point at which one of these outputs is true or
+  /// non-zero (execution::stop_when). \throws validation_error naming a pattern that matches no
+  /// variable, or a variable that is no Boolean, Integer or Real output.
+  std::vector<std::string> stop_when;
   /// Checked between steps: once set, the run ends there, with what was recorded written and a
   /// manifest that says "interrupted" (e.g. set by SIGINT).
   const std::atomic<bool>* interrupt = nullptr;
