@@ -229,7 +229,7 @@ std::string progress_display::format(time_point t, double wall) const {
   const double rtf = real_time_factor(t - start_, wall);
   const double percent = total > 0 ? 100.0 * sim / total : 100.0;
   char buf[160];
-  if (rtf > 0 && sim < total) {
+  if (rtf > 0 && sim < total && !ended_) {
     const double eta = (total - sim) / rtf;
     std::snprintf(buf, sizeof buf, "t = %.3f / %.3f s (%.1f%%), RTF %.2fx, ETA %.0f s",
                   to_seconds(t), to_seconds(stop_), percent, rtf, std::ceil(eta));
@@ -244,7 +244,7 @@ std::string progress_display::format(time_point t, double wall, const std::strin
                                      double progress) const {
   const double rtf = real_time_factor(t - start_, wall);
   char buf[200];
-  if (progress > 0 && progress < 1) {
+  if (progress > 0 && progress < 1 && !ended_) {
     std::snprintf(buf, sizeof buf, "t = %.3f s, RTF %.2fx, %s %.1f%%, ETA %.0f s", to_seconds(t),
                   rtf, progress_name.c_str(), 100.0 * progress,
                   std::ceil(wall * (1 - progress) / progress));
@@ -304,6 +304,7 @@ void progress_display::step_complete(const execution& ex, std::int64_t /*step*/,
 void progress_display::simulation_ended(const execution& ex, time_point t,
                                         const std::string& error) {
   timer_->simulation_ended(ex, t, error);  // a run's timer has stopped already: the same figure
+  ended_ = true;                           // no ETA for a run that ended early
   const double wall = timer_->seconds();
   const std::string text = line(ex, t, wall);
   if (terminal_) {

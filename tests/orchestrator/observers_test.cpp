@@ -96,6 +96,9 @@ std::string final_progress_line(double rate) {
 TEST(cosim_observers, a_components_progress_counts_only_when_it_is_ahead_of_the_clock) {
   // 10 % of the time; a component at 50 % ends the run early: its progress is shown
   EXPECT_THAT(final_progress_line(0.05), HasSubstr("m.progress 50.0%"));
+  // the run ended: no time is left to estimate
+  EXPECT_THAT(final_progress_line(0.05), ::testing::Not(HasSubstr("ETA")));
+  EXPECT_THAT(final_progress_line(0.0), ::testing::Not(HasSubstr("ETA")));
   // a component that reports nothing leaves the simulated time in charge
   EXPECT_THAT(final_progress_line(0.0), HasSubstr("(10.0%)"));
 }

@@ -120,6 +120,7 @@ class progress_display : public observer {
   std::shared_ptr<wall_timer> timer_;
   std::chrono::steady_clock::time_point last_print_{};
   std::uint32_t countdown_ = 0;
+  bool ended_ = false;
 };
 
 }  // namespace stride::cosim
