@@ -35,7 +35,9 @@ int main(int argc, char** argv) {
   run->add_flag("--force", run_args.force,
                 "Write into an existing non-empty output folder (files of the same name are "
                 "replaced)");
-  run->add_option("--set", run_args.sets, "Parameter or input start value: comp.var=value")
+  run->add_option("--set", run_args.sets,
+                  "Parameter or input start value: comp.var=value (not for a variable that a "
+                  "connection drives)")
       ->allow_extra_args(false);
   run->add_flag("--quiet,-q", run_args.quiet, "No progress display, only warnings and errors");
   run->add_flag("--fmu-debug-log", run_args.fmu_debug_log,
