@@ -1,5 +1,6 @@
 #include "commands.hpp"
 
+#include <cctype>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -90,6 +91,25 @@ int inspect_system(const fs::path& file) {
 
 }  // namespace
 
+std::vector<std::string> record_patterns(const std::vector<std::string>& values) {
+  std::vector<std::string> patterns;
+  for (const auto& value : values) {
+    std::string pattern;
+    for (const char c : value + ",") {
+      if (c == ',' || std::isspace(static_cast<unsigned char>(c)) != 0) {
+        if (!pattern.empty()) patterns.push_back(std::move(pattern));
+        pattern.clear();
+      } else {
+        pattern += c;
+      }
+    }
+  }
+  if (patterns.empty() && !values.empty()) {
+    throw validation_error("--record: no signal pattern given (e.g. --record 'robot.base_*')");
+  }
+  return patterns;
+}
+
 int run(const run_arguments& args, const run_extension& extension) {
   run_options options;
   options.output_dir = args.output;
@@ -103,7 +123,9 @@ int run(const run_arguments& args, const run_extension& extension) {
   limits.connect = std::chrono::milliseconds(static_cast<long>(args.worker_timeout * 1000));
   // joins the DDS domain only when a component has a worker
   options.build.placements.push_back(std::make_shared<remote::remote_placement>(args.dds, limits));
-  options.record_signals = args.signals;
+  options.record_signals = record_patterns(args.signals);
+  options.stop_when = args.stop_when;
+  options.force_output = args.force;
   options.interrupt = &catch_stop_signals();
   if (args.record_interval) {
     try {
@@ -174,12 +196,13 @@ int run(const run_arguments& args, const run_extension& extension) {
     return 128 + (signal == SIGTERM ? SIGTERM : SIGINT);
   }
   if (!args.quiet) {
-    std::printf(
-        "%s at t = %s s after %lld steps (%.2f s wall, real-time factor %.2f)\n",
-        report.result.terminated_by_component ? ("ended by " + report.result.terminated_by).c_str()
-                                              : "finished",
-        format_seconds(report.result.end_time).c_str(), static_cast<long long>(report.result.steps),
-        report.wall_seconds, report.real_time_factor);
+    // why and when it ended; the wall time and real-time factor are the progress display's
+    const bool early = report.result.terminated_by_component || !report.result.stopped_by.empty();
+    std::printf("%s at t = %s s after %lld steps (%.2f s wall, real-time factor %.2f)\n",
+                early ? ("stopped: " + end_reason(report.result)).c_str() : "finished",
+                format_seconds(report.result.end_time).c_str(),
+                static_cast<long long>(report.result.steps), report.wall_seconds,
+                report.real_time_factor);
     std::printf("output: %s\n", report.output_dir.string().c_str());
   }
   return 0;

@@ -26,8 +26,10 @@ struct run_arguments {
   std::filesystem::path resume;      ///< --resume DIR (empty: a new run)
   bool no_plots = false;             ///< skip the figures after a learner run
   int threads = 1;                   ///< --threads
-  std::vector<std::string> signals;  ///< --signals: record these instead of the system's
+  std::vector<std::string> signals;  ///< --record / --signals values (see record_patterns)
   std::optional<std::string> record_interval;
+  std::vector<std::string> stop_when;    ///< --stop-when: outputs that end the run
+  bool force = false;                    ///< --force: write into a non-empty output folder
   std::filesystem::path save_reference;  ///< --save-reference: a copy of the results CSV
   remote::dds_settings dds;              ///< where components with a worker are looked for
   double worker_timeout = 10;            ///< seconds to wait for a worker to appear
@@ -51,6 +53,9 @@ struct run_extension {
 };
 
 int run(const run_arguments& args, const run_extension& extension);
+/// The signal patterns of `--record` / `--signals` values: each value holds one or more, split
+/// at commas and white space. \throws validation_error when there is none.
+std::vector<std::string> record_patterns(const std::vector<std::string>& values);
 /// The part of `run` for a system with <agents> (cli/run_agents.cpp): `options` as `run` made
 /// them from `args`.
 int run_agents(cosim::system_structure system, cosim::run_options options,

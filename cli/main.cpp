@@ -35,8 +35,14 @@ int main(int argc, char** argv) {
       ->transform(stride::cli::existing_or_installed_model());
   run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
   run->add_option("--output,-o", run_args.output,
-                  "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>)");
-  run->add_option("--set", run_args.sets, "Parameter or input start value: comp.var=value")
+                  "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>); an existing "
+                  "one must be empty, unless --force");
+  run->add_flag("--force", run_args.force,
+                "Write into an existing non-empty output folder (files of the same name are "
+                "replaced)");
+  run->add_option("--set", run_args.sets,
+                  "Parameter or input start value: comp.var=value (not for a variable that a "
+                  "connection drives)")
       ->allow_extra_args(false);
   run->add_flag("--quiet,-q", run_args.quiet, "No progress display, only warnings and errors");
   run->add_flag("--fmu-debug-log", run_args.fmu_debug_log,
@@ -55,8 +61,13 @@ int main(int argc, char** argv) {
                   "identical for any count)")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  run->add_option("--signals", run_args.signals,
-                  "Record these signals (comp.var patterns with * and ?) instead of the system's")
+  run->add_option("--record,--signals", run_args.signals,
+                  "Record these signals instead of the system's: comp.var patterns with * and ?, "
+                  "separated by commas (e.g. 'robot.base_*,gait.phase'); may be repeated")
+      ->allow_extra_args(false);
+  run->add_option("--stop-when", run_args.stop_when,
+                  "End the run when this output (comp.var; Boolean, Integer or Real) becomes "
+                  "true or non-zero, e.g. robot.fallen; may be repeated")
       ->allow_extra_args(false);
   std::string record_interval;
   run->add_option("--record-interval", record_interval,

@@ -36,7 +36,9 @@ int run_agents(cosim::system_structure system, cosim::run_options options,
   const bool resuming = !options.resume_dir.empty();
   if (!resuming && options.output_dir.empty()) options.output_dir = default_output_dir(system);
   const fs::path dir = resuming ? options.resume_dir : options.output_dir;
-  if (!resuming) check_output_folder_free(dir);  // before the journal is made there
+  if (!resuming && !options.force_output) check_output_folder_free(dir);
+  // checked before the journal is made there: the agents' runs write next to it
+  options.force_output = true;
   fs::create_directories(dir);
   remote::table_endpoint where;
   where.domain = args.dds.domain;

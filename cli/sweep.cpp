@@ -254,7 +254,14 @@ std::string settings_text(const fs::path& system, const std::string& stop_time,
 
 void check_settings(const fs::path& dir, const std::string& settings) {
   const fs::path file = dir / k_settings_file;
-  if (!fs::exists(file)) return;
+  // a folder that is not a sweep is refused as `stride run --output` refuses it
+  if (!fs::exists(file)) {
+    if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir))) {
+      throw validation_error("--output " + dir.string() + " is not empty and holds no sweep (no " +
+                             k_settings_file + "): give another --output, or empty the folder");
+    }
+    return;
+  }
   const std::string before = read_text(file);
   if (before == settings) return;
   const auto old_lines = text::split(before, '\n'), new_lines = text::split(settings, '\n');

@@ -141,6 +141,7 @@ void execution::set_start_value(variable_id id, scalar_value value, const std::s
       break;
   }
   s.refs.add(v.type, v.reference);
+  start_origins_.emplace_back(id, origin);
 }
 
 void execution::add_group(std::vector<std::size_t> members, std::unique_ptr<step_group> group) {
@@ -181,6 +182,17 @@ void execution::freeze() {
   if (components_.empty()) throw validation_error("the system has no components");
   const component_declarations d = declarations();
   validate_connections(d, connections_, log_);
+  // the connection sets a driven variable at initialization: a value given to it would be lost
+  for (const auto& [id, origin] : start_origins_) {
+    for (const auto& c : connections_) {
+      if (!(c.to == id)) continue;
+      throw validation_error(
+          (origin.empty() ? "" : origin + ": ") + full_name(id) +
+          " is given a value, but the connection " + full_name(c.from) + " -> " + full_name(c.to) +
+          (c.options.origin.empty() ? "" : " (" + c.options.origin + ")") +
+          " drives it and would overwrite it: remove the value or the connection");
+    }
+  }
   system_wiring w;
   for (const auto& c : components_) w.components.push_back(c.get());
   w.step_multiples = multiples_;
@@ -207,6 +219,46 @@ void execution::add_observer(std::shared_ptr<observer> obs) {
   freeze();
   obs->attach(*this);
   observers_.push_back(std::move(obs));
+}
+
+void execution::stop_when(variable_id id) {
+  if (initialized_) throw validation_error("cannot add a stop condition after initialize()");
+  check_variable(id, {});
+  const auto& v = components_[id.component]->model_description().variables[id.variable];
+  const std::string name = full_name(id);
+  if (v.causality != causality::output) {
+    throw validation_error(name + " is " + std::string(to_string(v.causality)) +
+                           "; a stop condition needs an output");
+  }
+  if (exchange_type(v.type) == variable_type::string) {
+    throw validation_error(name +
+                           " is a String output; a stop condition needs a Boolean, "
+                           "Integer or Real output");
+  }
+  for (const auto& c : stop_conditions_) {
+    if (c.id == id) return;
+  }
+  stop_conditions_.push_back(observe(id));
+}
+
+const observed_variable* execution::stop_condition_met() const {
+  for (const auto& c : stop_conditions_) {
+    switch (c.type) {
+      case variable_type::boolean:
+        if (boolean_value(c)) return &c;
+        break;
+      case variable_type::integer:
+      case variable_type::enumeration:
+        if (integer_value(c) != 0) return &c;
+        break;
+      case variable_type::real:
+        if (real_value(c) != 0.0) return &c;
+        break;
+      case variable_type::string:
+        break;
+    }
+  }
+  return nullptr;
 }
 
 std::optional<std::size_t> execution::find_component(std::string_view name) const noexcept {
@@ -348,17 +400,25 @@ run_result execution::simulate_until(time_point stop, const std::atomic<bool>* i
   if (!initialized_) initialize(stop);
   run_result result;
   const duration h = algo_->base_step();
+  const auto condition_met = [&] {
+    const observed_variable* met = stop_condition_met();
+    if (met != nullptr) result.stopped_by = full_name(met->id);
+    return met != nullptr;
+  };
   try {
-    while (now_ + h <= stop) {
-      if (interrupt != nullptr && interrupt->load(std::memory_order_relaxed)) {
-        result.interrupted = true;
-        break;
-      }
-      const step_outcome outcome = step();
-      if (outcome.terminated) {
-        result.terminated_by_component = true;
-        result.terminated_by = components_[outcome.terminated_by]->name();
-        break;
+    if (!condition_met()) {
+      while (now_ + h <= stop) {
+        if (interrupt != nullptr && interrupt->load(std::memory_order_relaxed)) {
+          result.interrupted = true;
+          break;
+        }
+        const step_outcome outcome = step();
+        if (outcome.terminated) {
+          result.terminated_by_component = true;
+          result.terminated_by = components_[outcome.terminated_by]->name();
+          break;
+        }
+        if (condition_met()) break;
       }
     }
   } catch (const std::exception& e) {
@@ -367,7 +427,7 @@ run_result execution::simulate_until(time_point stop, const std::atomic<bool>* i
   }
   result.end_time = now_;
   result.steps = steps_;
-  if (result.terminated_by_component) finish(result.end_time, {});
+  if (result.terminated_by_component || !result.stopped_by.empty()) finish(result.end_time, {});
   return result;
 }
 

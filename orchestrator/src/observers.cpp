@@ -239,20 +239,46 @@ void csv_recorder::simulation_ended(const execution& /*ex*/, time_point /*t*/,
   }
 }
 
+double real_time_factor(duration simulated, double wall_seconds) noexcept {
+  return wall_seconds > 0 ? to_seconds(simulated) / wall_seconds : 0.0;
+}
+
+void wall_timer::start() noexcept {
+  start_ = std::chrono::steady_clock::now();
+  end_.reset();
+}
+
+void wall_timer::simulation_initialized(const execution& /*ex*/, time_point /*t*/) {
+  if (!start_) start();
+}
+
+void wall_timer::simulation_ended(const execution& /*ex*/, time_point /*t*/,
+                                  const std::string& /*error*/) {
+  if (start_ && !end_) end_ = std::chrono::steady_clock::now();
+}
+
+double wall_timer::seconds() const noexcept {
+  if (!start_) return 0.0;
+  return std::chrono::duration<double>(end_.value_or(std::chrono::steady_clock::now()) - *start_)
+      .count();
+}
+
 progress_display::progress_display(time_point stop, std::FILE* out, std::optional<bool> terminal,
-                                   std::chrono::milliseconds plain_period)
+                                   std::chrono::milliseconds plain_period,
+                                   std::shared_ptr<wall_timer> timer)
     : stop_(stop),
       out_(out),
       terminal_(terminal ? *terminal : ::isatty(::fileno(out)) != 0),
-      period_(terminal_ ? std::chrono::milliseconds(200) : plain_period) {}
+      period_(terminal_ ? std::chrono::milliseconds(200) : plain_period),
+      timer_(timer ? std::move(timer) : std::make_shared<wall_timer>()) {}
 
 std::string progress_display::format(time_point t, double wall) const {
   const double sim = to_seconds(t - start_);
   const double total = to_seconds(stop_ - start_);
-  const double rtf = wall > 0 ? sim / wall : 0.0;
+  const double rtf = real_time_factor(t - from_.value_or(start_), wall);
   const double percent = total > 0 ? 100.0 * sim / total : 100.0;
   char buf[160];
-  if (rtf > 0 && sim < total) {
+  if (rtf > 0 && sim < total && !ended_) {
     const double eta = (total - sim) / rtf;
     std::snprintf(buf, sizeof buf, "t = %.3f / %.3f s (%.1f%%), RTF %.2fx, ETA %.0f s",
                   to_seconds(t), to_seconds(stop_), percent, rtf, std::ceil(eta));
@@ -265,13 +291,13 @@ std::string progress_display::format(time_point t, double wall) const {
 
 std::string progress_display::format(time_point t, double wall, const std::string& progress_name,
                                      double progress) const {
-  const double sim = to_seconds(t - start_);
-  const double rtf = wall > 0 ? sim / wall : 0.0;
+  const double rtf = real_time_factor(t - from_.value_or(start_), wall);
+  const double done_here = progress - progress_from_;
   char buf[200];
-  if (progress > 0 && progress < 1) {
+  if (done_here > 0 && progress < 1 && !ended_) {
     std::snprintf(buf, sizeof buf, "t = %.3f s, RTF %.2fx, %s %.1f%%, ETA %.0f s", to_seconds(t),
                   rtf, progress_name.c_str(), 100.0 * progress,
-                  std::ceil(wall * (1 - progress) / progress));
+                  std::ceil(wall * (1 - progress) / done_here));
   } else {
     std::snprintf(buf, sizeof buf, "t = %.3f s, RTF %.2fx, %s %.1f%%", to_seconds(t), rtf,
                   progress_name.c_str(), 100.0 * std::clamp(progress, 0.0, 1.0));
@@ -302,11 +328,15 @@ std::string progress_display::line(const execution& ex, time_point t, double wal
 
 void progress_display::simulation_initialized(const execution& ex, time_point t) {
   start_ = ex.start_time();
-  wall_start_ = last_print_ = std::chrono::steady_clock::now();
-  (void)t;
+  timer_->simulation_initialized(ex, t);  // starts a timer of its own; a run's keeps its start
+  last_print_ = std::chrono::steady_clock::now();
 }
 
 void progress_display::step_complete(const execution& ex, std::int64_t /*step*/, time_point t) {
+  if (!from_) {
+    from_ = t - ex.base_step();
+    if (progress_var_) progress_from_ = ex.real_value(*progress_var_);
+  }
   // look at the wall clock only every few steps
   if (countdown_ > 0) {
     --countdown_;
@@ -316,8 +346,7 @@ void progress_display::step_complete(const execution& ex, std::int64_t /*step*/,
   const auto now = std::chrono::steady_clock::now();
   if (now - last_print_ < period_) return;
   last_print_ = now;
-  const double wall = std::chrono::duration<double>(now - wall_start_).count();
-  const std::string text = line(ex, t, wall);
+  const std::string text = line(ex, t, timer_->seconds());
   if (terminal_) {
     std::fprintf(out_, "\r\033[K%s", text.c_str());
   } else {
@@ -327,9 +356,10 @@ void progress_display::step_complete(const execution& ex, std::int64_t /*step*/,
 }
 
 void progress_display::simulation_ended(const execution& ex, time_point t,
-                                        const std::string& /*error*/) {
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+                                        const std::string& error) {
+  timer_->simulation_ended(ex, t, error);  // a run's timer has stopped already: the same figure
+  ended_ = true;                           // no ETA for a run that ended early
+  const double wall = timer_->seconds();
   const std::string text = line(ex, t, wall);
   if (terminal_) {
     std::fprintf(out_, "\r\033[K%s, wall %.2f s\n", text.c_str(), wall);

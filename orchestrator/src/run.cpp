@@ -60,13 +60,22 @@ std::string manifest_json(const manifest_data& m) {
   }
   j << "  \"end_time\": " << format_seconds(r.result.end_time) << ",\n";
   j << "  \"steps\": " << r.result.steps << ",\n";
-  j << "  \"ended_by\": "
-    << json_string(r.result.terminated_by_component
-                       ? "component " + r.result.terminated_by + " requested termination"
-                   : !r.error.empty()     ? "error"
-                   : r.result.interrupted ? "interrupted"
-                                          : "stop time")
-    << ",\n";
+  j << "  \"ended_by\": " << json_string(r.error.empty() ? end_reason(r.result) : "error") << ",\n";
+  // the same as data: what ended the run and when
+  const run_result& e = r.result;
+  j << "  \"stop_reason\": {\"kind\": "
+    << json_string(!r.error.empty()            ? "error"
+                   : e.terminated_by_component ? "component"
+                   : !e.stopped_by.empty()     ? "condition"
+                   : e.interrupted             ? "interrupted"
+                                               : "stop_time");
+  if (r.error.empty() && e.terminated_by_component) {
+    j << ", \"component\": " << json_string(e.terminated_by);
+  }
+  if (r.error.empty() && !e.stopped_by.empty()) {
+    j << ", \"variable\": " << json_string(e.stopped_by);
+  }
+  j << ", \"time\": " << format_seconds(e.end_time) << "},\n";
   if (r.result.interrupted && r.error.empty()) {
     j << "  \"interrupted_at\": " << format_seconds(r.result.end_time) << ",\n";
   }
@@ -159,6 +168,14 @@ run_status read_run_status(const fs::path& run_dir) {
   return s;
 }
 
+std::string end_reason(const run_result& result) {
+  if (result.terminated_by_component) {
+    return "component " + result.terminated_by + " requested termination";
+  }
+  if (!result.stopped_by.empty()) return result.stopped_by;
+  return result.interrupted ? "interrupted" : "stop time";
+}
+
 fs::path default_output_dir(const system_structure& system) {
   const std::time_t t = std::time(nullptr);
   std::tm tm{};
@@ -228,10 +245,24 @@ std::size_t substitute_placeholders(system_structure& system, const fs::path& ou
 }
 
 void check_output_folder_free(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) {
+    throw validation_error("output folder " + dir.string() + " is a file, not a folder");
+  }
   if (fs::exists(dir / "system.xml")) {
     throw validation_error("output folder " + dir.string() +
                            " holds an earlier run (its system.xml): choose another --output, "
-                           "remove it, or continue it with --resume");
+                           "remove it, continue it with --resume, or replace its files with "
+                           "--force");
+  }
+  fs::directory_iterator entries(dir, ec);
+  if (ec) throw validation_error("output folder " + dir.string() + ": " + ec.message());
+  if (entries != fs::directory_iterator()) {
+    throw validation_error("output folder " + dir.string() + " is not empty (it holds " +
+                           entries->path().filename().string() +
+                           "): choose another --output, empty it, or write into it anyway with "
+                           "--force");
   }
 }
 
@@ -255,7 +286,8 @@ run_report run_system(system_structure system, const run_options& options) {
   if (!options.record_signals.empty()) {
     system.record.enabled = true;
     system.record.signals = options.record_signals;
-    system.record.signal_locations.clear();
+    system.record.signal_locations.assign(options.record_signals.size(),
+                                          source_location{"--record", 0});
   }
   if (options.record_interval) system.record.interval = *options.record_interval;
   // the copies of replica groups get their own names and ${copy} values before the run's
@@ -273,7 +305,9 @@ run_report run_system(system_structure system, const run_options& options) {
   } else {
     report.output_dir =
         options.output_dir.empty() ? default_output_dir(system) : options.output_dir;
-    if (!options.initialize_only) check_output_folder_free(report.output_dir);
+    if (!options.initialize_only && !options.force_output) {
+      check_output_folder_free(report.output_dir);
+    }
   }
   // system.xml keeps the placeholders (as_written above), so it can be run (resumed) again
   const std::size_t resume_uses = substitute_placeholders(
@@ -294,14 +328,11 @@ run_report run_system(system_structure system, const run_options& options) {
 
   report.system = system;
   built_system built = build_system(system, options.build);
-  create_output_folder(report.output_dir);
-  write_file(report.output_dir / "system.xml", to_xml(as_written));
-  report.manifest_file = report.output_dir / "manifest.json";
-
   auto& ex = *built.execution;
+
+  // what to record and when to stop, checked before anything is written
+  std::vector<variable_id> recorded;
   if (system.record.enabled) {
-    report.results_file = report.output_dir / system.record.file;
-    std::vector<variable_id> vars;
     for (std::size_t i = 0; i < system.record.signals.size(); ++i) {
       const auto& pattern = system.record.signals[i];
       const auto found = find_variables(ex, pattern);
@@ -313,12 +344,56 @@ run_report run_system(system_structure system, const run_options& options) {
                                "' matches no variable");
       }
       for (const auto& v : found) {
-        if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
+        if (std::find(recorded.begin(), recorded.end(), v) == recorded.end()) recorded.push_back(v);
       }
     }
+    if (const auto& interval = system.record.interval;
+        interval && (*interval <= duration::zero() || *interval % built.base_step != duration{})) {
+      const std::string where =
+          options.record_interval ? std::string("--record-interval") : system.record.where.str();
+      throw validation_error((where.empty() ? "" : where + ": ") + "recording interval " +
+                             format_seconds(*interval) +
+                             " s is not a positive multiple of the base step " +
+                             format_seconds(built.base_step) + " s");
+    }
+  }
+  for (const auto& pattern : options.stop_when) {
+    const std::string what = "--stop-when '" + pattern + "': ";
+    const auto found = find_variables(ex, pattern);
+    if (found.empty()) throw validation_error(what + "names no variable");
+    const bool wildcard = pattern.find_first_of("*?") != std::string::npos;
+    std::size_t conditions = 0;
+    for (const auto& v : found) {
+      const auto& var = ex.component_at(v.component).model_description().variables[v.variable];
+      // a wildcard takes the outputs it matches that can be conditions
+      if (wildcard && (var.causality != causality::output ||
+                       exchange_type(var.type) == variable_type::string)) {
+        continue;
+      }
+      try {
+        ex.stop_when(v);
+        ++conditions;
+      } catch (const validation_error& e) {
+        throw validation_error(what + e.what());
+      }
+    }
+    if (conditions == 0) {
+      throw validation_error(what + "matches no Boolean, Integer or Real output");
+    }
+  }
+
+  create_output_folder(report.output_dir);
+  write_file(report.output_dir / "system.xml", to_xml(as_written));
+  report.manifest_file = report.output_dir / "manifest.json";
+
+  // the run's wall clock, told first of all observers that the simulation ended
+  const auto timer = std::make_shared<wall_timer>();
+  ex.add_observer(timer);
+  if (system.record.enabled) {
+    report.results_file = report.output_dir / system.record.file;
     try {
       auto recorder =
-          std::make_shared<csv_recorder>(report.results_file, vars, system.record.interval);
+          std::make_shared<csv_recorder>(report.results_file, recorded, system.record.interval);
       if (saved) recorder->continue_after(saved->time);  // the rows so far stay
       ex.add_observer(std::move(recorder));
     } catch (const validation_error& e) {
@@ -326,7 +401,10 @@ run_report run_system(system_structure system, const run_options& options) {
       throw validation_error((where.empty() ? "" : where + ": ") + e.what());
     }
   }
-  if (options.progress) ex.add_observer(std::make_shared<progress_display>(built.stop));
+  if (options.progress) {
+    ex.add_observer(std::make_shared<progress_display>(built.stop, stderr, std::nullopt,
+                                                       std::chrono::seconds(5), timer));
+  }
 
   manifest_data m;
   m.system = &system;
@@ -335,19 +413,18 @@ run_report run_system(system_structure system, const run_options& options) {
   m.started = utc_now();
   if (resuming) m.resumed_from = fs::absolute(options.resume_dir).string();
   if (saved) m.resumed_at = saved->time;
-  const auto wall_start = std::chrono::steady_clock::now();
+  // the figures the progress display showed last: one timer, one definition
   auto finish_report = [&] {
-    report.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    const double simulated =
-        to_seconds(report.result.end_time - (saved ? saved->time : system.start));
-    report.real_time_factor = report.wall_seconds > 0 ? simulated / report.wall_seconds : 0.0;
+    report.wall_seconds = timer->seconds();
+    report.real_time_factor = real_time_factor(
+        report.result.end_time - (saved ? saved->time : system.start), report.wall_seconds);
   };
   if (options.initialize_only) {
     ex.initialize(built.stop);
     ex.end();
     return report;
   }
+  timer->start();  // initialization is part of the run's wall time
   try {
     if (saved) {
       ex.initialize(built.stop);

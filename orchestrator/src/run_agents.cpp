@@ -72,7 +72,7 @@ agents_report run_agents(system_structure system, const run_options& options,
   report.output_dir = resuming                     ? options.resume_dir
                       : options.output_dir.empty() ? default_output_dir(system)
                                                    : options.output_dir;
-  if (!resuming) check_output_folder_free(report.output_dir);
+  if (!resuming && !options.force_output) check_output_folder_free(report.output_dir);
   create_output_folder(report.output_dir);
   system_structure as_written = system;
   for (const auto& o : options.overrides) apply_override(as_written, o);

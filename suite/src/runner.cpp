@@ -85,7 +85,8 @@ std::vector<std::string> case_command(const case_spec& c, const run_settings& se
                                    "--quiet",
                                    "--no-plots",
                                    "--threads",
-                                   "1"};
+                                   "1",
+                                   "--force"};  // the case folder holds its run.log already
   if (c.stop_time) args.insert(args.end(), {"--stop-time", *c.stop_time});
   if (c.record_interval) args.insert(args.end(), {"--record-interval", *c.record_interval});
   for (const auto& s : c.sets) args.insert(args.end(), {"--set", s});

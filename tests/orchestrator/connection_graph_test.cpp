@@ -144,6 +144,23 @@ TEST(cosim_validation, start_values_only_for_parameters_and_inputs) {
   EXPECT_NO_THROW(s.algo.set_start_value(s.v("a", "u"), 2.0));
 }
 
+// the connection sets its target at initialization: a value given to it would be lost silently
+TEST(cosim_validation, a_value_for_a_variable_a_connection_drives_is_refused_naming_both) {
+  two_components s;
+  s.algo.set_start_value(s.v("b", "u"), 2.0, "--set b.u=2");
+  s.algo.set_start_value(s.v("b", "v"), 3.0, "sys.xml:4");  // not driven: fine
+  s.algo.connect(s.v("a", "z"), s.v("b", "u"), {true, "sys.xml:9"});
+  EXPECT_EQ(freeze_error(s.algo),
+            "--set b.u=2: b.u is given a value, but the connection a.z -> b.u (sys.xml:9) drives "
+            "it and would overwrite it: remove the value or the connection");
+  two_components parameter;
+  parameter.algo.set_start_value(parameter.v("b", "p"), 2.0, "sys.xml:5");
+  parameter.algo.connect(parameter.v("a", "z"), parameter.v("b", "p"), {false, "sys.xml:10"});
+  EXPECT_THAT(freeze_error(parameter.algo),
+              HasSubstr("sys.xml:5: b.p is given a value, but the connection a.z -> b.p "
+                        "(sys.xml:10) drives it"));
+}
+
 TEST(cosim_validation, frozen_topology_cannot_change) {
   two_components s;
   s.algo.freeze();

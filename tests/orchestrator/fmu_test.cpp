@@ -269,6 +269,22 @@ TEST_F(cosim_fmu_test, fmu_requested_stop_ends_the_run_cleanly) {
   EXPECT_EQ(read_lines(report.results_file).size(), 1u + 5u);  // header, t = 0 .. 0.04
   EXPECT_THAT(read_text(report.manifest_file),
               HasSubstr("\"ended_by\": \"component a requested termination\""));
+  EXPECT_THAT(read_text(report.manifest_file),
+              HasSubstr("\"stop_reason\": {\"kind\": \"component\", \"component\": \"a\", "
+                        "\"time\": 0.04}"));
+}
+
+TEST_F(cosim_fmu_test, a_stop_condition_ends_the_run_and_the_manifest_names_it) {
+  auto o = options("condition");
+  o.stop_when = {"b.count*"};  // b.counter = 1 + a.counter each step: non-zero after the first
+  const auto report = run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+  EXPECT_EQ(report.result.stopped_by, "b.counter");
+  EXPECT_EQ(report.result.steps, 1);
+  EXPECT_EQ(end_reason(report.result), "b.counter");
+  EXPECT_THAT(read_text(report.manifest_file),
+              HasSubstr("\"stop_reason\": {\"kind\": \"condition\", \"variable\": "
+                        "\"b.counter\", \"time\": 0.01}"));
+  EXPECT_EQ(read_lines(report.results_file).size(), 1u + 2u);  // header, t = 0, 0.01
 }
 
 TEST_F(cosim_fmu_test, fmu_error_names_component_function_and_time_and_keeps_results) {
@@ -710,11 +726,25 @@ TEST_F(cosim_fmu_test, an_earlier_run_is_not_overwritten) {
   EXPECT_THROW(run_agents(parse_system_file(k_data / "stride_test_pair.xml"), o, a),
                validation_error);
   EXPECT_FALSE(fs::exists(o.output_dir / "agent1"));
-  // a folder without a run is fine
-  auto fresh = options("fresh");
-  fs::create_directories(fresh.output_dir);
-  std::ofstream(fresh.output_dir / "notes.txt") << "mine\n";
-  EXPECT_NO_THROW(run_system(parse_system_file(k_data / "stride_test_pair.xml"), fresh));
+  // nor is anything else: a folder is written into only when it is empty, or when forced
+  auto other = options("other");
+  fs::create_directories(other.output_dir);
+  std::ofstream(other.output_dir / "notes.txt") << "mine\n";
+  try {
+    run_system(parse_system_file(k_data / "stride_test_pair.xml"), other);
+    ADD_FAILURE() << "no error";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr(" is not empty (it holds notes.txt)"));
+  }
+  EXPECT_THROW(run_agents(parse_system_file(k_data / "stride_test_pair.xml"), other, a),
+               validation_error);
+  EXPECT_FALSE(fs::exists(other.output_dir / "system.xml"));
+  other.force_output = true;
+  EXPECT_NO_THROW(run_system(parse_system_file(k_data / "stride_test_pair.xml"), other));
+  EXPECT_EQ(read_text(other.output_dir / "notes.txt"), "mine\n");
+  auto empty = options("empty");
+  fs::create_directories(empty.output_dir);
+  EXPECT_NO_THROW(run_system(parse_system_file(k_data / "stride_test_pair.xml"), empty));
 }
 
 TEST_F(cosim_fmu_test, a_system_with_agents_is_not_run_as_one) {

@@ -134,8 +134,43 @@ std::string final_progress_line(double rate) {
 TEST(cosim_observers, a_components_progress_counts_only_when_it_is_ahead_of_the_clock) {
   // 10 % of the time; a component at 50 % ends the run early: its progress is shown
   EXPECT_THAT(final_progress_line(0.05), HasSubstr("m.progress 50.0%"));
+  // the run ended: no time is left to estimate
+  EXPECT_THAT(final_progress_line(0.05), ::testing::Not(HasSubstr("ETA")));
+  EXPECT_THAT(final_progress_line(0.0), ::testing::Not(HasSubstr("ETA")));
   // a component that reports nothing leaves the simulated time in charge
   EXPECT_THAT(final_progress_line(0.0), HasSubstr("(10.0%)"));
+}
+
+TEST(cosim_observers, the_real_time_factor_is_simulated_time_over_wall_time) {
+  EXPECT_DOUBLE_EQ(real_time_factor(std::chrono::seconds(30), 10.0), 3.0);
+  EXPECT_DOUBLE_EQ(real_time_factor(250 * k_ms, 0.5), 0.5);
+  EXPECT_EQ(real_time_factor(std::chrono::seconds(30), 0.0), 0.0);  // no wall time yet
+  wall_timer idle;
+  EXPECT_EQ(idle.seconds(), 0.0);  // never started
+}
+
+// the last line of a display that shares the run's timer shows the figures the run reports
+TEST(cosim_observers, the_live_and_the_final_real_time_factor_come_from_one_timer) {
+  execution ex(std::make_unique<fixed_step_algorithm>(10 * k_ms), time_point{}, quiet_log());
+  ex.add_component(counter("c", {}));
+  const auto timer = std::make_shared<wall_timer>();
+  ex.add_observer(timer);
+  std::FILE* out = std::tmpfile();
+  ex.add_observer(std::make_shared<progress_display>(time_point(std::chrono::seconds(1)), out,
+                                                     false, std::chrono::milliseconds(0), timer));
+  timer->start();
+  const auto result = ex.simulate_until(time_point(std::chrono::seconds(1)));
+  ex.end();
+  const double wall = timer->seconds();
+  EXPECT_EQ(timer->seconds(), wall);  // stopped when the simulation ended
+  std::rewind(out);
+  std::string text;
+  for (char buf[256]; std::fgets(buf, sizeof buf, out) != nullptr;) text += buf;
+  std::fclose(out);
+  char expected[96];
+  std::snprintf(expected, sizeof expected, "RTF %.2fx, wall %.2f s\n",
+                real_time_factor(result.end_time - time_point{}, wall), wall);
+  EXPECT_THAT(text.substr(text.rfind("stride: ")), HasSubstr(expected));
 }
 
 TEST(cosim_observers, progress_line_shows_time_rtf_and_eta) {

@@ -61,6 +61,8 @@ struct run_result {
   bool terminated_by_component = false;
   std::string terminated_by;  ///< component name when terminated_by_component
   bool interrupted = false;   ///< ended early because the interrupt flag was set
+  /// "comp.var" of the stop condition (execution::stop_when) that ended the run; empty if none
+  std::string stopped_by;
 };
 
 /// The complete state of an initialized execution: every component's FMU state and what the
@@ -91,12 +93,16 @@ class execution {
   const std::vector<std::vector<std::size_t>>& groups() const noexcept { return group_members_; }
   /// Connects an output to an input (or parameter). Checked in freeze().
   void connect(variable_id from, variable_id to, connection_options options = {});
-  /// Value set before initialization (parameters, start values of inputs).
-  /// \throws validation_error if the variable cannot be set or the value has the wrong type.
+  /// Value set before initialization (parameters, start values of inputs). `origin` ("file:line",
+  /// "--set comp.var=value") prefixes errors, also freeze()'s when a connection drives the
+  /// variable. \throws validation_error if the variable cannot be set or the value has the wrong
+  /// type.
   void set_start_value(variable_id var, scalar_value value, const std::string& origin = {});
 
   /// Validates and fixes the topology. \throws validation_error with every message naming
-  /// components, variables and connection origins; an algebraic loop is spelled out.
+  /// components, variables and connection origins; an algebraic loop is spelled out; a value
+  /// given to a variable that a connection drives (the connection would overwrite it at
+  /// initialization) is refused naming both.
   void freeze();
   bool frozen() const noexcept { return frozen_; }
 
@@ -104,6 +110,11 @@ class execution {
   observed_variable observe(variable_id var);
   /// \throws validation_error after initialize().
   void add_observer(std::shared_ptr<observer> obs);
+  /// A stop condition: simulate_until ends at the first communication point (the start time
+  /// included) at which this output is true (Boolean) or non-zero (Integer, Real), and
+  /// run_result::stopped_by names it. \throws validation_error after initialize(), or naming the
+  /// variable when it is not an output of type Boolean, Integer, Enumeration or Real.
+  void stop_when(variable_id var);
 
   /// Freezes if needed and initializes the components; `stop` is passed to them.
   void initialize(std::optional<time_point> stop);
@@ -112,10 +123,11 @@ class execution {
   /// One base step (initializes first if needed); observers are told.
   /// \throws component_error naming component, function and time.
   step_outcome step();
-  /// Steps until `stop` (ends at the last communication point ≤ stop) or until a component
-  /// requests termination. Initializes first if needed; may be called again with a later stop.
-  /// On an error or a termination request the execution ends: observers are told (recorders
-  /// flush), components are terminated, and an error is rethrown.
+  /// Steps until `stop` (ends at the last communication point ≤ stop), until a component
+  /// requests termination or until a stop condition (stop_when) holds. Initializes first if
+  /// needed; may be called again with a later stop. On an error, a termination request or a stop
+  /// condition the execution ends: observers are told (recorders flush), components are
+  /// terminated, and an error is rethrown.
   /// `interrupt`, when given, is checked between steps: once set, the run ends there as at the
   /// stop time (set from a signal handler, for instance).
   run_result simulate_until(time_point stop, const std::atomic<bool>* interrupt = nullptr);
@@ -168,6 +180,8 @@ class execution {
   void check_variable(variable_id id, const std::string& context) const;
   void finish(time_point t, const std::string& error) noexcept;
   void terminate_components() noexcept;
+  /// the first stop condition that holds now, or nullptr
+  const observed_variable* stop_condition_met() const;
 
   std::unique_ptr<stride::cosim::algorithm> algo_;
   log_sink log_;
@@ -177,8 +191,10 @@ class execution {
   std::vector<int> multiples_;
   std::vector<connection> connections_;
   std::vector<start_values> starts_;
+  std::vector<std::pair<variable_id, std::string>> start_origins_;  ///< what set_start_value set
   std::vector<std::size_t> order_;
   std::vector<std::shared_ptr<observer>> observers_;
+  std::vector<observed_variable> stop_conditions_;
   time_point start_;
   time_point now_;
   std::int64_t steps_ = 0;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,15 +70,41 @@ class csv_recorder : public observer {
   std::optional<time_point> continue_after_;
 };
 
+/// Simulated seconds per wall-clock second (0 while no wall time has passed): the one definition
+/// of the real-time factor, shown live by progress_display and at the end by run_system's report.
+double real_time_factor(duration simulated, double wall_seconds) noexcept;
+
+/// The wall time of a run on the steady clock: from start() (or, without it, the end of
+/// initialization) to the end of the simulation. run_system's report and its progress display
+/// read one timer, so that the live real-time factor and the final one are the same figure.
+class wall_timer : public observer {
+ public:
+  /// Starts the clock now (e.g. before initialization, so that it counts).
+  void start() noexcept;
+  void simulation_initialized(const execution& ex, time_point t) override;
+  void simulation_ended(const execution& ex, time_point t, const std::string& error) override;
+  /// Seconds from the start to the end of the simulation, or to now while it runs; 0 before the
+  /// start.
+  double seconds() const noexcept;
+
+ private:
+  std::optional<std::chrono::steady_clock::time_point> start_;
+  std::optional<std::chrono::steady_clock::time_point> end_;
+};
+
 /// Prints simulated time, real-time factor and ETA on a stream (stderr by default). On a
 /// terminal one line is redrawn a few times per second; otherwise a plain line is printed every
 /// `plain_period` of wall time. When a component has a Real output named `progress` (a fraction
 /// 0..1 of its work, e.g. the learner's RL steps) that is ahead of the simulated time, the
-/// percentage and the ETA come from it (a run that a component ends early).
+/// percentage and the ETA come from it (a run that a component ends early). The real-time factor
+/// and ETA count from the first step this process took, so a resumed run shows its own speed.
 class progress_display : public observer {
  public:
+  /// `timer`: the run's wall clock (add it to the execution before the display); none: the
+  /// display keeps its own, from the end of initialization.
   progress_display(time_point stop, std::FILE* out = stderr, std::optional<bool> terminal = {},
-                   std::chrono::milliseconds plain_period = std::chrono::seconds(5));
+                   std::chrono::milliseconds plain_period = std::chrono::seconds(5),
+                   std::shared_ptr<wall_timer> timer = nullptr);
 
   void attach(execution& ex) override;
 
@@ -97,12 +124,17 @@ class progress_display : public observer {
   std::string progress_name_;
   time_point stop_;
   time_point start_{};
+  // where this process's stepping began (later than start_ for a run resumed from a saved
+  // state) and the component's progress there: speed and ETA count only what was done here
+  std::optional<time_point> from_;
+  double progress_from_ = 0.0;
   std::FILE* out_;
   bool terminal_;
   std::chrono::milliseconds period_;
-  std::chrono::steady_clock::time_point wall_start_{};
+  std::shared_ptr<wall_timer> timer_;
   std::chrono::steady_clock::time_point last_print_{};
   std::uint32_t countdown_ = 0;
+  bool ended_ = false;
 };
 
 }  // namespace stride::cosim

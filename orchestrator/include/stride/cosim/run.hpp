@@ -19,10 +19,17 @@ namespace stride::cosim {
 /// The library version ("0.1.0").
 std::string_view version() noexcept;
 
+/// What ended a run that did not fail, for people: "stop time", "interrupted", the stop
+/// condition "comp.var" that held, or "component NAME requested termination".
+std::string end_reason(const run_result& result);
+
 struct run_options {
   /// output folder; empty = ./stride-out/<system-name>-<YYYYmmdd-HHMMSS> (suffixed -2, -3 … if
   /// it exists)
   std::filesystem::path output_dir;
+  /// Write into an output folder that exists and is not empty (`--force`; files of the same
+  /// name are replaced). Without it such a folder is refused (check_output_folder_free).
+  bool force_output = false;
   std::vector<std::string> overrides;  ///< "comp.var=value", applied in order
   std::optional<time_point> stop;      ///< replaces the system's stop time
   bool progress = true;                ///< progress display on stderr
@@ -40,6 +47,11 @@ struct run_options {
   std::vector<std::string> record_signals;
   /// ... and this interval (a multiple of the base step).
   std::optional<duration> record_interval;
+  /// Stop conditions, "comp.var" (or patterns with * and ?: the Boolean, Integer and Real
+  /// outputs they match): the run ends at the first communication point at which one of these
+  /// outputs is true or non-zero (execution::stop_when). \throws validation_error naming a
+  /// pattern that matches no variable, or a variable that is no Boolean, Integer or Real output.
+  std::vector<std::string> stop_when;
   /// Checked between steps: once set, the run ends there, with what was recorded written, a
   /// manifest that says "interrupted" and when ("interrupted_at", seconds), and the state of every
   /// component in checkpoint_file() for `resume_dir` (e.g. set by SIGINT).
@@ -73,9 +85,11 @@ struct run_report {
   std::filesystem::path results_file;  ///< empty if recording is disabled
   std::filesystem::path manifest_file;
   run_result result;
+  /// from the start of initialization to the end of the simulation (components' termination
+  /// not included), as the progress display counts it
   double wall_seconds = 0;
-  double real_time_factor = 0;
-  std::string error;  ///< non-empty if the run failed (then also thrown)
+  double real_time_factor = 0;  ///< simulated time / wall_seconds (cosim::real_time_factor)
+  std::string error;            ///< non-empty if the run failed (then also thrown)
 };
 
 /// The file in a run's folder with the state of the whole system at the moment the run was
@@ -94,8 +108,9 @@ run_status read_run_status(const std::filesystem::path& run_dir);
 /// that an interrupted run's results stay as they are when it is resumed.
 std::string fresh_results_name(const std::filesystem::path& dir, const std::string& name);
 
-/// \throws validation_error when `dir` holds an earlier run (its system.xml, which every run
-/// writes first): a new run there would overwrite it without a word.
+/// \throws validation_error when `dir` exists and is not an empty folder: a file, an earlier run
+/// (its system.xml, which every run writes first) or anything else a new run would mix its files
+/// with or overwrite without a word. The message names the folder and, for a run, says so.
 void check_output_folder_free(const std::filesystem::path& dir);
 
 /// The default output folder name for a system, relative to the working directory.
@@ -104,7 +119,8 @@ std::filesystem::path default_output_dir(const system_structure& system);
 /// A system with <agents> is run by run_agents (one call of this per agent); here it is an
 /// error, except for `initialize_only` (one agent is checked).
 /// Applies overrides, expands replica groups, substitutes placeholders, builds, creates the
-/// output folder (refused when it holds an earlier run, except to resume it), writes `system.xml`
+/// output folder (refused when it exists and is not empty, except to resume it or with
+/// `force_output`), writes `system.xml`
 /// (with overrides; groups and placeholders kept), records, runs and writes `manifest.json` (with
 /// every parameter value the system sets). On a run-time error the results so far and a manifest
 /// with "status": "error" are written and the error is rethrown.
