@@ -58,7 +58,9 @@ class test_model : public sdk::model_base<test_data> {
         .unit("s")
         .describe("Integral of u over the steps taken");
     t.add("n", &test_data::n).input().describe("Integer input added to the counter increment");
-    t.add("counter", &test_data::counter).output().describe("Number of completed steps");
+    t.add("counter", &test_data::counter)
+        .output()
+        .describe("Completed steps, each adding 1 + n (wraps around at 2^31)");
     t.add("enable", &test_data::enable).input().describe("Boolean input");
     t.add("active", &test_data::active)
         .output()
@@ -96,7 +98,10 @@ class test_model : public sdk::model_base<test_data> {
                              " fails on request (fail_at_step)");
     }
     data_.integral += data_.u * sdk::to_seconds(h);
-    data_.counter += 1 + data_.n;
+    // wraps around at 2^31 like a hardware counter (in unsigned arithmetic: no overflow UB),
+    // which long chained runs reach
+    data_.counter = static_cast<int>(static_cast<unsigned>(data_.counter) + 1u +
+                                     static_cast<unsigned>(data_.n));
     for (int i = 0; i < 3; ++i) data_.vec_out[i] = 2.0 * data_.vec_in[i];
     if (context_.log->enabled("logEvents")) {
       context_.log->info("logEvents", "step " + std::to_string(data_.counter));
