@@ -25,10 +25,7 @@ const std::string k_cli = STRIDE_CLI;
 const fs::path k_pair = k_data / "stride_test_pair.xml";
 
 std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return test::read_file(file);
 }
 
 std::string first_line(const fs::path& file) {

@@ -19,6 +19,14 @@ extern char** environ;
 
 namespace stride::cosim::test {
 
+/// The whole content of `file` ("" when it cannot be read).
+inline std::string read_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 struct process_result {
   int exit_code = -1;
   std::string out;

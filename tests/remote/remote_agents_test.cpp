@@ -27,10 +27,7 @@ const std::string k_cli = STRIDE_CLI;
 const fs::path k_demo = fs::path(STRIDE_SOURCE_DIR) / "models" / "experiments" / "demo.xml";
 
 std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return cosim::test::read_file(file);
 }
 
 class remote_agents : public ::testing::Test {

@@ -27,10 +27,7 @@ const std::string k_cli = STRIDE_CLI;
 const fs::path k_source = STRIDE_SOURCE_DIR;
 
 std::string read(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return cosim::test::read_file(file);
 }
 
 // replaces every `from` in `text` by `to`; the test fails if there is none
