@@ -7,8 +7,7 @@ if(STRIDE_SANITIZE)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang" OR NOT CMAKE_C_COMPILER_ID STREQUAL "Clang")
     message(FATAL_ERROR "STRIDE_SANITIZE needs Clang for C and C++ (CC=clang CXX=clang++)")
   endif()
-  # vptr is left out: its runtime is C++-only, and the plain-C importer loads our FMUs
-  add_compile_options(-fsanitize=address,undefined -fno-sanitize=vptr -fno-sanitize-recover=all
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all
                       -fno-omit-frame-pointer)
-  add_link_options(-fsanitize=address,undefined -fno-sanitize=vptr)
+  add_link_options(-fsanitize=address,undefined)
 endif()
