@@ -62,6 +62,43 @@ int parse_servo_id(const tinyxml2::XMLElement& servo, const std::string& source,
   return static_cast<int>(id);
 }
 
+// The joints must form a tree: urdfdom detects neither a link that is the child of two joints
+// nor a loop of joints, and leaks the links it has tied together when it then fails.
+void check_tree(const tinyxml2::XMLElement& robot, const std::string& source) {
+  const auto link_of = [](const tinyxml2::XMLElement& joint, const char* role) -> std::string {
+    const auto* e = joint.FirstChildElement(role);
+    const char* name = e != nullptr ? e->Attribute("link") : nullptr;
+    return name != nullptr ? name : "";
+  };
+  std::map<std::string, std::pair<std::string, std::string>> parent_of;  // child: joint, parent
+  for (auto* joint = robot.FirstChildElement("joint"); joint != nullptr;
+       joint = joint->NextSiblingElement("joint")) {
+    const char* name_attr = joint->Attribute("name");
+    const std::string name = name_attr != nullptr ? name_attr : "";
+    const std::string parent = link_of(*joint, "parent");
+    const std::string child = link_of(*joint, "child");
+    if (parent.empty() || child.empty()) continue;  // urdfdom names what is missing
+    if (parent == child)
+      fail(source, "joint '" + name + "': link '" + child + "' is its own parent");
+    if (const auto it = parent_of.find(child); it != parent_of.end()) {
+      fail(source, "link '" + child + "' is the child of two joints, '" + it->second.first +
+                       "' and '" + name + "'");
+    }
+    parent_of[child] = {name, parent};
+  }
+  for (const auto& [start, first] : parent_of) {
+    std::string path = first.first;
+    std::string link = first.second;
+    for (std::size_t steps = 0; steps <= parent_of.size(); ++steps) {
+      if (link == start) fail(source, "the joints form a loop: " + path);
+      const auto up = parent_of.find(link);
+      if (up == parent_of.end()) break;
+      path += " -> " + up->second.first;
+      link = up->second.second;
+    }
+  }
+}
+
 // reads the extensions and rewrites <capsule> to <cylinder> so urdfdom accepts the document
 extensions pre_pass(tinyxml2::XMLDocument& doc, const std::string& source) {
   extensions ext;
@@ -109,6 +146,7 @@ extensions pre_pass(tinyxml2::XMLDocument& doc, const std::string& source) {
     joint_of_servo[id] = name;
     ext.servo_of_joint[name] = id;
   }
+  check_tree(*robot, source);
   return ext;
 }
 

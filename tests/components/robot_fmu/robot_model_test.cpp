@@ -288,6 +288,31 @@ TEST(robot_model, unsupported_content_names_the_element) {
               HasSubstr("joint 'slide2d': planar joints are not supported"));
 }
 
+TEST(robot_model, joints_that_do_not_form_a_tree_are_named) {
+  const std::string links = "<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" +
+                            k_inertial + "</link><link name=\"c\">" + k_inertial + "</link>";
+  const auto joint = [](const std::string& name, const std::string& parent,
+                        const std::string& child) {
+    return "<joint name=\"" + name + "\" type=\"fixed\"><parent link=\"" + parent +
+           "\"/><child link=\"" + child + "\"/></joint>";
+  };
+  // a -> b -> c -> a: urdfdom would not see it (and leaked the links it had tied together)
+  EXPECT_THAT(error_of([&] {
+                parse_robot_model(robot(links + joint("ab", "a", "b") + joint("bc", "b", "c") +
+                                        joint("ca", "c", "a")),
+                                  "loop.urdf");
+              }),
+              HasSubstr("loop.urdf: the joints form a loop: ca -> bc -> ab"));
+  EXPECT_THAT(
+      error_of([&] { parse_robot_model(robot(links + joint("self", "b", "b")), "self.urdf"); }),
+      HasSubstr("self.urdf: joint 'self': link 'b' is its own parent"));
+  EXPECT_THAT(error_of([&] {
+                parse_robot_model(robot(links + joint("ac", "a", "c") + joint("bc", "b", "c")),
+                                  "two.urdf");
+              }),
+              HasSubstr("two.urdf: link 'c' is the child of two joints, 'ac' and 'bc'"));
+}
+
 TEST(robot_model, physically_impossible_models_are_rejected) {
   // a moving link without mass
   const std::string massless = robot("<link name=\"a\">" + k_inertial +
