@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A fuzzing campaign on the sanitizer build (scripts/sanitize.sh builds it): every target of
 # fuzz/ for SECONDS (default 600), PARALLEL at a time (default 2), starting from its seed corpus.
-# New inputs go to build-sanitize/fuzz/work/<target>/, crashes to build-sanitize/fuzz/crashes/.
+# New inputs go to build-sanitize/fuzz/new-inputs/<target>/, crashes to build-sanitize/fuzz/crashes/.
 # Prints one line per target: runs, coverage, corpus size, and whether it found anything.
 # usage: scripts/fuzz.sh [SECONDS] [PARALLEL]
 set -uo pipefail
@@ -19,15 +19,15 @@ export LSAN_OPTIONS="suppressions=$root/fuzz/lsan.supp"
 
 run_one() {
   local t="$1"
-  mkdir -p "$build/fuzz/work/$t"
+  mkdir -p "$build/fuzz/new-inputs/$t"
   "$build/fuzz/$t" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$build/fuzz/crashes/$t-" \
-    "$build/fuzz/work/$t" "$root/fuzz/corpus/$t" > "$build/fuzz/logs/$t.log" 2>&1
+    "$build/fuzz/new-inputs/$t" "$root/fuzz/corpus/$t" > "$build/fuzz/logs/$t.log" 2>&1
   local rc=$?
   local runs cov corpus
   runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$build/fuzz/logs/$t.log" | grep -o '[0-9]*$')"
   cov="$(grep -o 'cov: [0-9]*' "$build/fuzz/logs/$t.log" | tail -1 | grep -o '[0-9]*')"
-  corpus="$(ls "$build/fuzz/work/$t" | wc -l)"
+  corpus="$(ls "$build/fuzz/new-inputs/$t" | wc -l)"
   if [ "$rc" -eq 0 ]; then
     echo "fuzz: $t: ${seconds} s, ${runs:-?} runs, coverage ${cov:-?}, corpus $corpus new inputs, nothing found"
   else
