@@ -120,14 +120,7 @@ void write_checkpoint(const fs::path& file, time_point t, const std::vector<std:
   w.put_bytes(state);
   const std::vector<std::byte> bytes = w.take();
   // whole or not at all: a checkpoint cut short would be worse than none
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
+  write_file(file, std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 struct checkpoint_data {
