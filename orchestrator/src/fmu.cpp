@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -158,6 +159,7 @@ class fmu_component final : public component {
     if (!refs.reals.empty()) {
       check("fmi2GetReal",
             fn_.fmi2GetReal(instance_, refs.reals.data(), refs.reals.size(), values.reals.data()));
+      refuse_non_finite(refs.reals, values.reals);
     }
     if (!refs.integers.empty()) {
       check("fmi2GetInteger", fn_.fmi2GetInteger(instance_, refs.integers.data(),
@@ -244,6 +246,23 @@ class fmu_component final : public component {
       throw component_error("component '" + name_ + "': " + fmu_.file.string() +
                             " cannot save its state (canGetAndSetFMUstate and "
                             "canSerializeFMUstate are not both true)");
+    }
+  }
+
+  // An FMU that computes an infinity or NaN ends the run here, naming the variable, instead of
+  // passing the value on to other components and into the results.
+  void refuse_non_finite(const std::vector<value_reference>& refs,
+                         const std::vector<double>& values) const {
+    for (std::size_t i = 0; i < refs.size(); ++i) {
+      if (std::isfinite(values[i])) continue;
+      std::string variable = "value reference " + std::to_string(refs[i]);
+      for (const auto& v : fmu_.md.variables) {
+        if (v.type == variable_type::real && v.reference == refs[i]) variable = v.name;
+      }
+      const char* text = std::isnan(values[i]) ? "NaN" : values[i] > 0 ? "inf" : "-inf";
+      throw component_error("component '" + name_ + "': fmi2GetReal gave " + name_ + "." +
+                            variable + " = " + text +
+                            ", not a finite number (non-finite values are not passed on)");
     }
   }
 

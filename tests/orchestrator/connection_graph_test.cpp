@@ -96,6 +96,16 @@ TEST(cosim_validation, a_delay_breaks_an_algebraic_loop) {
   EXPECT_EQ(s.algo.order(), (std::vector<std::size_t>{0, 1}));
 }
 
+// the consumer is declared before its producer and feeds it back through a delay: the delayed
+// edge must not constrain the order, so the producer steps first although declared second
+TEST(cosim_validation, a_delayed_back_edge_lets_a_later_declared_producer_step_first) {
+  two_components s;
+  s.algo.connect(s.v("b", "y"), s.v("a", "u"));
+  s.algo.connect(s.v("a", "y"), s.v("b", "u"), {true, {}});
+  EXPECT_EQ(freeze_error(s.algo), "no error");
+  EXPECT_EQ(s.algo.order(), (std::vector<std::size_t>{1, 0}));
+}
+
 TEST(cosim_validation, jacobi_has_no_algebraic_loops) {
   execution algo(std::make_unique<fixed_step_algorithm>(10 * k_ms, algorithm_kind::jacobi),
                  time_point{}, quiet_log());
@@ -174,6 +184,19 @@ TEST(cosim_validation, duplicate_component_names_and_bad_multiples) {
   algo.add_component(std::make_unique<mock_component>("a"));
   EXPECT_THROW(algo.add_component(std::make_unique<mock_component>("a")), validation_error);
   EXPECT_THROW(algo.add_component(std::make_unique<mock_component>("b"), 0), validation_error);
+}
+
+// The documented tie-break: among components free to step, the lowest declaration index goes
+// first, and a feedback group ranks by its first member (expected orders worked out by hand).
+TEST(cosim_step_plan, ties_go_to_the_lowest_declaration_index) {
+  // 3 -> 0; 2 <-> 4 a cycle without feedthrough; 1 and 5 alone
+  std::vector<connection> c = {{{3, 0}, {0, 0}, {}}, {{2, 0}, {4, 0}, {}}, {{4, 0}, {2, 1}, {}}};
+  // free at the start: 1, {2,4}, 3, 5 -> 1; then {2,4}; then 3, which frees 0 (0 < 5); then 5
+  EXPECT_EQ(gauss_seidel_order(6, c), (std::vector<std::size_t>{1, 2, 4, 3, 0, 5}));
+  // with 3 -> 0 delayed nothing holds 0 back: declaration order, the group's members together
+  // at the place of its first member
+  c[0].options.delayed = true;
+  EXPECT_EQ(gauss_seidel_order(6, c), (std::vector<std::size_t>{0, 1, 2, 4, 3, 5}));
 }
 
 TEST(cosim_step_plan, independent_chains_become_tasks_and_chains_merge) {

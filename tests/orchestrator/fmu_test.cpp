@@ -32,6 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::quoted;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const fs::path k_fmu = fs::path(STRIDE_FMU_DIR) / "stride_test.fmu";
 const fs::path k_data = STRIDE_TEST_DATA_DIR;
@@ -305,6 +306,24 @@ TEST_F(cosim_fmu_test, fmu_error_names_component_function_and_time_and_keeps_res
   for (const auto& l : log.lines) logged = logged || l.find("error a: ") == 0;
   EXPECT_TRUE(logged);
   EXPECT_TRUE(fs::is_empty(o.build.import.extract_root));
+}
+
+// a.vec_out[2] = 2 * a.vec_in[2] overflows to infinity in the first step: the run ends naming
+// the output, before b or the results see it
+TEST_F(cosim_fmu_test, a_non_finite_output_ends_the_run_naming_the_variable) {
+  auto o = options("overflow");
+  o.overrides = {"a.vec_in[2]=1e308"};
+  try {
+    run_system(parse_system_file(k_data / "stride_test_pair.xml"), o);
+    FAIL() << "no error";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'a': fmi2GetReal gave a.vec_out[2] = inf, not a "
+                                    "finite number"));
+    EXPECT_THAT(e.what(), HasSubstr("t = 0 s"));
+  }
+  const auto rows = read_lines(o.output_dir / "results.csv");
+  ASSERT_EQ(rows.size(), 1u + 1u);  // header, t = 0
+  EXPECT_THAT(rows[1], Not(HasSubstr("inf")));
 }
 
 TEST_F(cosim_fmu_test, wrong_guid_is_refused_at_instantiation) {

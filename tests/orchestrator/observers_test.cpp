@@ -89,6 +89,29 @@ TEST(cosim_observers, csv_recorder_continues_a_file_after_a_given_time) {
   }
 }
 
+// rows are due every interval counted from the run's start, and the time column is absolute
+TEST(cosim_observers, csv_recorder_of_a_run_that_starts_later_than_zero) {
+  temp_dir dir("stride-test-");
+  const time_point start(1250 * k_ms);
+  execution ex(std::make_unique<fixed_step_algorithm>(250 * k_ms, algorithm_kind::gauss_seidel),
+               start, quiet_log());
+  auto m = std::make_unique<mock_component>("m");
+  m->real("x", causality::output);
+  m->on_step = [](mock_component& self, time_point, duration h) {
+    self.r("x") += to_seconds(h);  // x = time since the start
+    return step_result::complete;
+  };
+  ex.add_component(std::move(m));
+  const auto csv = dir.path() / "r.csv";
+  ex.add_observer(csv_recorder::from_patterns(csv, ex, {"m.x"}, 500 * k_ms));
+  ex.simulate_until(time_point(2250 * k_ms));
+  ex.end();
+  std::ifstream in(csv);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "time,m.x\n1.25,0\n1.75,0.5\n2.25,1\n");
+}
+
 TEST(cosim_observers, recording_interval_must_be_a_multiple_of_the_base_step) {
   execution ex(std::make_unique<fixed_step_algorithm>(10 * k_ms, algorithm_kind::gauss_seidel),
                time_point{}, quiet_log());

@@ -2,6 +2,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "stride/cosim/scalar_value.hpp"
 
 namespace stride::cosim {
@@ -19,6 +21,15 @@ TEST(cosim_scalar, parse_and_format) {
   EXPECT_THROW(parse_scalar(variable_type::integer, "1.5"), std::invalid_argument);
   EXPECT_THROW(parse_scalar(variable_type::boolean, "yes"), std::invalid_argument);
   EXPECT_EQ(format_scalar(0.1), "0.1");
+}
+
+// a Real given as text must be a finite number: infinities, NaN and overflow are refused
+TEST(cosim_scalar, non_finite_reals_are_refused) {
+  for (const char* text : {"inf", "-inf", "infinity", "nan", "-nan", "1e400", "-1e400"}) {
+    EXPECT_THROW(parse_scalar(variable_type::real, text), std::invalid_argument) << text;
+  }
+  EXPECT_EQ(std::get<double>(parse_scalar(variable_type::real, "1.7976931348623157e308")),
+            std::numeric_limits<double>::max());
 }
 
 }  // namespace

@@ -72,6 +72,34 @@ TEST(variables, range_and_finiteness_checked) {
   EXPECT_EQ(h.set_integer("stop_after_steps", 0), fmi2OK);
 }
 
+// An infinity is refused as "not a finite number" by every kind of Real variable (input, array
+// element, tunable and fixed parameter) and leaves the value as it was; so is a NaN among finite
+// values of one call, which stops the call at that value.
+TEST(variables, infinities_are_refused_by_every_real_set) {
+  const double inf = std::numeric_limits<double>::infinity();
+  fmi_harness h;
+  for (const char* name : {"u", "vec_in[2]", "gain", "offset"}) {
+    for (const double x : {inf, -inf}) {
+      h.clear_log();
+      EXPECT_EQ(h.set_real(name, x), fmi2Error) << name << " = " << x;
+      EXPECT_TRUE(h.logged(std::string("'") + name + "': value is not a finite number")) << name;
+    }
+  }
+  const fmi2ValueReference refs[] = {fmi_harness::vr("vec_in[1]"), fmi_harness::vr("vec_in[2]")};
+  const double values[] = {4.0, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_EQ(fmi2SetReal(h.c(), refs, 2, values), fmi2Error);
+  h.to_step_complete();
+  EXPECT_EQ(h.get_real("gain"), 2.0);
+  EXPECT_EQ(h.get_real("offset"), 0.0);
+  EXPECT_EQ(h.get_real("y"), 0.0);  // u unchanged
+  ASSERT_EQ(fmi2DoStep(h.c(), 0.0, 0.01, fmi2True), fmi2OK);
+  EXPECT_EQ(h.get_real("vec_out[1]"), 8.0);  // the value before the refused one was taken
+  EXPECT_EQ(h.get_real("vec_out[2]"), 0.0);
+  // in step mode too
+  EXPECT_EQ(h.set_real("u", -inf), fmi2Error);
+  EXPECT_EQ(h.get_real("y"), 0.0);
+}
+
 TEST(variables, unknown_reference_or_wrong_type) {
   fmi_harness h;
   h.to_step_complete();
