@@ -155,52 +155,69 @@ void extract_archive(const fs::path& archive, const fs::path& destination,
     entries.push_back({index, std::move(name), directory, size});
   }
 
-  // pass 2: write; the destination is ours, so no symlinks exist inside it
+  // pass 2: write; the destination is ours, so no symlinks exist inside it. What this pass
+  // creates is removed again if it fails: a refused archive leaves no half-extracted files.
   const fs::path root = fs::weakly_canonical(destination);
+  std::vector<fs::path> created;
+  const auto make_directories = [&created](const fs::path& dir) {
+    std::vector<fs::path> missing;
+    for (fs::path p = dir; !p.empty() && !fs::exists(p); p = p.parent_path()) missing.push_back(p);
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+      fs::create_directory(*it);
+      created.push_back(*it);
+    }
+  };
   std::array<char, 1 << 16> buffer{};
   std::uint64_t written_total = 0;
-  for (const auto& e : entries) {
-    const fs::path target = (root / e.name).lexically_normal();
-    // defence in depth: the normalised path must still be inside the destination
-    const auto rel = target.lexically_relative(root);
-    if (rel.empty() || *rel.begin() == "..") fail("entry \"" + e.name + "\" escapes the archive");
-    if (e.directory) {
-      fs::create_directories(target);
-      continue;
-    }
-    fs::create_directories(target.parent_path());
-    std::unique_ptr<zip_file_t, zip_file_closer> zf(zip_fopen_index(za.get(), e.index, 0));
-    if (!zf) fail("cannot open entry \"" + e.name + "\": " + zip_strerror(za.get()));
-    const int fd =
-        ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
-    if (fd < 0) {
-      fail("cannot create \"" + e.name + "\": " + std::generic_category().message(errno));
-    }
-    fd_closer closer{fd};
-    std::uint64_t written = 0;
-    for (;;) {
-      const zip_int64_t n = zip_fread(zf.get(), buffer.data(), buffer.size());
-      if (n < 0) fail("cannot inflate entry \"" + e.name + "\": " + zip_file_strerror(zf.get()));
-      if (n == 0) break;
-      written += static_cast<std::uint64_t>(n);
-      written_total += static_cast<std::uint64_t>(n);
-      // the declared size may lie; enforce the limits on what is actually inflated
-      if (written > limits.max_entry_size || written > e.size ||
-          written_total > limits.max_total_size) {
-        fail("entry \"" + e.name + "\" inflates beyond its declared size or the size limit");
+  try {
+    for (const auto& e : entries) {
+      const fs::path target = (root / e.name).lexically_normal();
+      // defence in depth: the normalised path must still be inside the destination
+      const auto rel = target.lexically_relative(root);
+      if (rel.empty() || *rel.begin() == "..") fail("entry \"" + e.name + "\" escapes the archive");
+      if (e.directory) {
+        make_directories(target);
+        continue;
       }
-      const char* p = buffer.data();
-      auto left = static_cast<std::size_t>(n);
-      while (left > 0) {
-        const ssize_t w = ::write(fd, p, left);
-        if (w < 0) {
-          if (errno == EINTR) continue;
-          fail("cannot write \"" + e.name + "\": " + std::generic_category().message(errno));
+      make_directories(target.parent_path());
+      std::unique_ptr<zip_file_t, zip_file_closer> zf(zip_fopen_index(za.get(), e.index, 0));
+      if (!zf) fail("cannot open entry \"" + e.name + "\": " + zip_strerror(za.get()));
+      const int fd =
+          ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+      if (fd < 0) {
+        fail("cannot create \"" + e.name + "\": " + std::generic_category().message(errno));
+      }
+      created.push_back(target);
+      fd_closer closer{fd};
+      std::uint64_t written = 0;
+      for (;;) {
+        const zip_int64_t n = zip_fread(zf.get(), buffer.data(), buffer.size());
+        if (n < 0) fail("cannot inflate entry \"" + e.name + "\": " + zip_file_strerror(zf.get()));
+        if (n == 0) break;
+        written += static_cast<std::uint64_t>(n);
+        written_total += static_cast<std::uint64_t>(n);
+        // the declared size may lie; enforce the limits on what is actually inflated
+        if (written > limits.max_entry_size || written > e.size ||
+            written_total > limits.max_total_size) {
+          fail("entry \"" + e.name + "\" inflates beyond its declared size or the size limit");
         }
-        p += w;
-        left -= static_cast<std::size_t>(w);
+        const char* p = buffer.data();
+        auto left = static_cast<std::size_t>(n);
+        while (left > 0) {
+          const ssize_t w = ::write(fd, p, left);
+          if (w < 0) {
+            if (errno == EINTR) continue;
+            fail("cannot write \"" + e.name + "\": " + std::generic_category().message(errno));
+          }
+          p += w;
+          left -= static_cast<std::size_t>(w);
+        }
       }
     }
+  } catch (...) {
+    std::error_code ignored;
+    for (auto it = created.rbegin(); it != created.rend(); ++it) fs::remove(*it, ignored);
+    throw;
   }
 }
 

@@ -135,6 +135,37 @@ TEST_F(cosim_import, rejects_oversized_entries) {
   EXPECT_TRUE(extract_root_is_empty());
 }
 
+// An archive whose headers declare an entry smaller than its content (a zip bomb lies this way):
+// extraction stops at the declared size, whatever the limits allow, and leaves nothing behind.
+TEST_F(cosim_import, an_entry_longer_than_its_declared_size_is_refused) {
+  const fs::path file = root.path() / "liar.zip";
+  write_zip(file, {{"a.txt", std::string(20000, 'a')}});
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // the uncompressed size: offset 22 of the local header, 24 of the central directory header
+  const auto patch = [&](const std::string& signature, std::size_t offset) {
+    const auto at = bytes.find(signature);
+    ASSERT_NE(at, std::string::npos);
+    const std::uint32_t declared = 100;
+    for (int i = 0; i < 4; ++i) bytes[at + offset + i] = static_cast<char>(declared >> (8 * i));
+  };
+  patch(std::string("PK\x03\x04", 4), 22);
+  patch(std::string("PK\x01\x02", 4), 24);
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  const fs::path dest = root.path() / "dest";
+  fs::create_directories(dest);
+  try {
+    extract_archive(file, dest);
+    ADD_FAILURE() << "no error";
+  } catch (const fmu_import_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("entry \"a.txt\" inflates beyond its declared size"));
+  }
+  EXPECT_TRUE(fs::is_empty(dest));
+}
+
 TEST_F(cosim_import, rejects_backslashes_and_non_zip_files) {
   const fs::path fmu_file = root.path() / "win.fmu";
   write_zip(fmu_file, {{"binaries\\linux64\\demo.so", "x"}});
