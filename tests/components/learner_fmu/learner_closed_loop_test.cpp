@@ -211,11 +211,33 @@ TEST_F(learner_resume, plot_writes_the_figures_of_learner_and_evaluation_runs) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("best state: period_time = 465, swing_right_left = 17"));
   EXPECT_THAT(r.out, HasSubstr("P2 (period_time = 600, swing_right_left = 20): 10 windows"));
+  // every figure is a PNG of the terminal's size (960 x 680: the IHDR chunk's width and height)
   for (const char* png : {"v_heatmap.png", "v_heatmap_2.png", "v_profile.png", "convergence.png",
                           "reward.png", "paths.png", "evaluation.png", "eval_paths.png"}) {
-    EXPECT_GT(fs::exists(run / "figures" / png) ? fs::file_size(run / "figures" / png) : 0u, 1000u)
-        << png;
+    const std::string bytes =
+        fs::exists(run / "figures" / png) ? read_all(run / "figures" / png) : "";
+    ASSERT_GE(bytes.size(), 24u) << png;
+    EXPECT_EQ(bytes.substr(0, 8), "\x89PNG\r\n\x1a\n") << png;
+    const auto be32 = [&](std::size_t at) {
+      std::uint32_t v = 0;
+      for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+      return v;
+    };
+    EXPECT_EQ(be32(16), 960u) << png;
+    EXPECT_EQ(be32(20), 680u) << png;
   }
+  // what is drawn, worked out by hand from the files above: V per (period, swing) cell in rows
+  // of one swing; max V per period and per swing; per episode the value and its moving average;
+  // paths in segments ended by a fall or a new episode
+  const fs::path fig = run / "figures";
+  EXPECT_EQ(read_all(fig / "v_heatmap.dat"), "450 15 1\n465 15 2\n\n450 17 -3\n465 17 40\n");
+  EXPECT_THAT(read_all(fig / "v_heatmap.gp"), HasSubstr("'best: 465, 17'"));
+  EXPECT_EQ(read_all(fig / "v_heatmap_2.dat"), "450 15 0\n465 15 1\n\n450 17 0\n465 17 2\n");
+  EXPECT_EQ(read_all(fig / "v_profile_1.dat"), "450 1\n465 40\n");
+  EXPECT_EQ(read_all(fig / "v_profile_2.dat"), "15 2\n17 40\n");
+  EXPECT_EQ(read_all(fig / "convergence.dat"), "1 5 5\n2 40 22.5\n");
+  EXPECT_EQ(read_all(fig / "reward.dat"), "1 10 10\n2 -390 -190\n");
+  EXPECT_EQ(read_all(fig / "paths.dat"), "0.01 0 1\n0.05 0.01 1\n\n0.02 0 2\n\n0.04 0 2\n\n");
   fs::create_directories(scratch.path() / "empty");
   const auto empty = stride("plot " + test::quoted(scratch.path() / "empty"));
   EXPECT_EQ(empty.exit_code, 1);

@@ -37,7 +37,8 @@ struct extract_limits {
 /// Extracts every entry of the zip archive `archive` into the existing directory `destination`.
 /// Rejects (before writing anything) entries whose name is absolute, contains "..", a backslash
 /// or a NUL, symbolic links, and entries over the limits; the size limit is enforced again
-/// while inflating. Existing files are never overwritten and never followed.
+/// while inflating. Existing files are never overwritten and never followed; a refused archive
+/// leaves nothing it created behind.
 /// \throws fmu_import_error naming the archive and the entry.
 void extract_archive(const std::filesystem::path& archive, const std::filesystem::path& destination,
                      const extract_limits& limits = {});
