@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "png_size.hpp"
 #include "process.hpp"
 #include "stride/cosim/archive.hpp"
 
@@ -149,7 +150,8 @@ TEST_F(sweep_cli, failed_points_are_reported_the_others_tabled_and_finished_ones
   EXPECT_EQ(lines_of(read(out / "sweep.csv")),
             (std::vector<std::string>{"fail_at_step,gain,b.y,n", "0,1,2,101", "0,3,6,101"}));
   if (have_gnuplot()) {
-    EXPECT_GT(fs::file_size(out / "sweep.png"), 1000u);
+    EXPECT_EQ(stride::test::png_size(out / "sweep.png"),
+              std::make_pair(1400u, 600u));  // two panels
   }
 
   // again: the finished points are kept, the failed ones run (and fail) again
@@ -189,7 +191,7 @@ TEST_F(sweep_cli, speed_map_points_equal_stride_run_of_the_point) {
   EXPECT_THAT(r.out, HasSubstr("3 states, "));
   EXPECT_THAT(r.out, HasSubstr("fastest without falls: "));
   if (have_gnuplot()) {
-    EXPECT_GT(fs::file_size(map / "speed_map.png"), 1000u);
+    EXPECT_EQ(stride::test::png_size(map / "speed_map.png"), std::make_pair(1400u, 600u));
   }
 
   for (const char* point : {"450,15", "960,15"}) {

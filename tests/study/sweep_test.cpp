@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "png_size.hpp"
 #include "stride/learner/artefacts.hpp"
 #include "stride/study/sweep.hpp"
 
@@ -109,13 +110,14 @@ TEST_F(study_sweep, heat_maps_are_drawn_for_two_axes_only) {
   EXPECT_THROW(write_grid_heat_map(one, dir_ / "one.png"), std::runtime_error);
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
   write_speed_map_figure(speed_map_table(), dir_ / "speed_map.png");
-  EXPECT_GT(fs::file_size(dir_ / "speed_map.png"), 1000u);
+  EXPECT_EQ(test::png_size(dir_ / "speed_map.png"), std::make_pair(1400u, 600u));
   // the falls are marked from their own file
   std::ifstream falls(dir_ / "speed_map_falls.dat");
   std::string text((std::istreambuf_iterator<char>(falls)), std::istreambuf_iterator<char>());
   EXPECT_EQ(text, "450 17 3\n480 15 1\n");
   write_grid_heat_map(speed_map_table(), dir_ / "grid.png");
-  EXPECT_GT(fs::file_size(dir_ / "grid.png"), 1000u);
+  // four columns: panels of 700 x 600 pixels, three across
+  EXPECT_EQ(test::png_size(dir_ / "grid.png"), std::make_pair(2100u, 1200u));
 }
 
 }  // namespace
