@@ -527,8 +527,8 @@ std::vector<std::byte> fixed_step_algorithm::state_to_bytes(const std::any& stat
   w.put_size(s->entries.size());
   for (const auto& e : s->entries) {
     w.put(static_cast<std::int64_t>(e.time.time_since_epoch().count()));
-    w.put_block(e.latest);
-    w.put_block(e.published);
+    detail::put_block(w, e.latest);
+    detail::put_block(w, e.published);
   }
   return w.take();
 }
@@ -546,8 +546,8 @@ std::any fixed_step_algorithm::state_from_bytes(std::span<const std::byte> bytes
   for (std::size_t i = 0; i < n; ++i) {
     cached_entry e;
     e.time = time_point(duration(r.get<std::int64_t>()));
-    e.latest = r.get_block();
-    e.published = r.get_block();
+    e.latest = detail::get_block(r);
+    e.published = detail::get_block(r);
     const value_block& now = pimpl_->entries[i].latest;
     for (const value_block* b : {&e.latest, &e.published}) {
       if (b->reals.size() != now.reals.size() || b->integers.size() != now.integers.size() ||

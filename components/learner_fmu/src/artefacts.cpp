@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "stride/common/bytes.hpp"
 #include "stride/common/files.hpp"
 
 namespace stride::learner {
@@ -26,56 +27,8 @@ std::string errno_text() {
   return std::strerror(errno);
 }
 
-class byte_writer {
- public:
-  template <class T>
-  void put(const T& v) {
-    const auto* p = reinterpret_cast<const std::byte*>(&v);
-    out.insert(out.end(), p, p + sizeof(T));
-  }
-  void put_bytes(std::span<const std::byte> b) {
-    put(static_cast<std::uint64_t>(b.size()));
-    out.insert(out.end(), b.begin(), b.end());
-  }
-  void put_string(const std::string& s) {
-    put_bytes(std::span(reinterpret_cast<const std::byte*>(s.data()), s.size()));
-  }
-  std::vector<std::byte> out;
-};
-
-class byte_reader {
- public:
-  byte_reader(std::span<const std::byte> in, const fs::path& file) : in_(in), file_(file) {}
-  template <class T>
-  T get() {
-    need(sizeof(T));
-    T v;
-    std::memcpy(&v, in_.data() + pos_, sizeof(T));
-    pos_ += sizeof(T);
-    return v;
-  }
-  std::vector<std::byte> get_bytes() {
-    const auto n = get<std::uint64_t>();
-    need(n);
-    std::vector<std::byte> b(in_.begin() + static_cast<std::ptrdiff_t>(pos_),
-                             in_.begin() + static_cast<std::ptrdiff_t>(pos_ + n));
-    pos_ += n;
-    return b;
-  }
-  std::string get_string() {
-    const auto b = get_bytes();
-    return std::string(reinterpret_cast<const char*>(b.data()), b.size());
-  }
-  void need(std::uint64_t n) const {
-    if (n > in_.size() - pos_) throw learner_error(file_.string() + ": checkpoint is truncated");
-  }
-  bool at_end() const { return pos_ == in_.size(); }
-
- private:
-  std::span<const std::byte> in_;
-  std::size_t pos_ = 0;
-  const fs::path& file_;
-};
+// fails naming the checkpoint file
+using byte_reader = common::byte_reader<learner_error>;
 
 std::map<std::string, std::string> parse_lines(const std::string& text) {
   std::map<std::string, std::string> m;
@@ -107,7 +60,7 @@ std::string csv_values(const state_grid& grid, std::size_t s) {
 }  // namespace
 
 void write_checkpoint(const fs::path& file, const checkpoint& c) {
-  byte_writer w;
+  common::byte_writer w;
   for (char ch : k_magic) w.put(ch);
   w.put_string(c.config);
   w.put_bytes(c.state);
@@ -137,7 +90,7 @@ void write_checkpoint(const fs::path& file, const checkpoint& c) {
   }
   try {
     common::write_file_atomically(
-        file, std::string_view(reinterpret_cast<const char*>(w.out.data()), w.out.size()));
+        file, std::string_view(reinterpret_cast<const char*>(w.bytes().data()), w.bytes().size()));
   } catch (const std::runtime_error& e) {
     throw learner_error(e.what());
   }
@@ -151,16 +104,17 @@ checkpoint read_checkpoint(const fs::path& file) {
   if (bytes.size() < sizeof k_magic || std::memcmp(bytes.data(), k_magic, sizeof k_magic) != 0) {
     throw learner_error(file.string() + ": not a learner checkpoint");
   }
-  byte_reader r(bytes.subspan(sizeof k_magic), file);
+  byte_reader r(bytes.subspan(sizeof k_magic), file.string() + ": checkpoint is truncated");
   checkpoint c;
   c.config = r.get_string();
-  c.state = r.get_bytes();
+  const auto state = r.get_bytes();
+  c.state.assign(state.begin(), state.end());
   const auto n = r.get<std::uint64_t>();
-  r.need(n * sizeof(double));
+  r.need(n, sizeof(double));
   c.values.resize(n);
   for (auto& v : c.values) v = r.get<double>();
   const auto nt = r.get<std::uint64_t>();
-  r.need(nt * 24);
+  r.need(nt, 24);
   for (std::uint64_t i = 0; i < nt; ++i) {
     eligibility_traces::entry e;
     e.state = static_cast<std::size_t>(r.get<std::uint64_t>());
@@ -177,7 +131,7 @@ checkpoint read_checkpoint(const fs::path& file) {
     shared_checkpoint sh;
     sh.round = r.get<std::int64_t>();
     const auto ne = r.get<std::uint64_t>();
-    r.need(ne * (sizeof(std::uint32_t) + sizeof(double)));
+    r.need(ne, sizeof(std::uint32_t) + sizeof(double));
     for (std::uint64_t i = 0; i < ne; ++i) {
       sh.entries.push_back(r.get<std::uint32_t>());
       sh.increments.push_back(r.get<double>());
