@@ -8,6 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "stride/common/bytes.hpp"
+
 namespace stride::robot {
 
 namespace {
@@ -15,123 +17,89 @@ namespace {
 constexpr char k_state_magic[8] = {'S', 'T', 'R', 'I', 'D', 'E', 'R', 'B'};
 constexpr std::uint32_t k_state_version = 1;
 
-class writer {
- public:
-  void raw(const void* p, std::size_t n) {
-    const auto* b = static_cast<const std::uint8_t*>(p);
-    data.insert(data.end(), b, b + n);
-  }
-  void f64(double v) { raw(&v, sizeof v); }
-  void u32(std::uint32_t v) { raw(&v, sizeof v); }
-  template <std::size_t n>
-  void f64s(const std::array<double, n>& v) {
-    for (double x : v) f64(x);
-  }
-  void f64s(const Eigen::Vector3d& v) {
-    for (int k = 0; k < 3; ++k) f64(v[k]);
-  }
-  std::vector<std::uint8_t> data;
-};
+using reader = common::byte_reader<std::invalid_argument>;
 
-class reader {
- public:
-  explicit reader(std::span<const std::uint8_t> d) : data_(d) {}
-  void raw(void* p, std::size_t n) {
-    if (pos_ + n > data_.size()) throw std::invalid_argument("robot state image is truncated");
-    std::memcpy(p, data_.data() + pos_, n);
-    pos_ += n;
-  }
-  double f64() {
-    double v = 0.0;
-    raw(&v, sizeof v);
-    return v;
-  }
-  std::uint32_t u32() {
-    std::uint32_t v = 0;
-    raw(&v, sizeof v);
-    return v;
-  }
-  template <std::size_t n>
-  void f64s(std::array<double, n>& v) {
-    for (double& x : v) x = f64();
-  }
-  void f64s(Eigen::Vector3d& v) {
-    for (int k = 0; k < 3; ++k) v[k] = f64();
-  }
-  [[nodiscard]] bool at_end() const { return pos_ == data_.size(); }
-
- private:
-  std::span<const std::uint8_t> data_;
-  std::size_t pos_ = 0;
-};
+// fixed-size vectors of doubles (std::array, Eigen::Vector3d)
+template <class Vector>
+void put_all(common::byte_writer& w, const Vector& v) {
+  for (double x : v) w.put(x);
+}
+template <class Vector>
+void get_all(reader& r, Vector& v) {
+  for (double& x : v) x = r.get<double>();
+}
 
 }  // namespace
 
 std::vector<std::uint8_t> encode_state_image(const plant_snapshot& s) {
   const plant_state& p = s.plant;
-  writer w;
-  w.raw(k_state_magic, sizeof k_state_magic);
-  w.u32(k_state_version);
-  w.u32(static_cast<std::uint32_t>(s.bodies.size()));
-  w.u32(static_cast<std::uint32_t>(p.servo_velocity.size()));
-  w.u32(static_cast<std::uint32_t>(p.targets.size()));
+  common::byte_writer w;
+  for (char c : k_state_magic) w.put(c);
+  w.put(k_state_version);
+  w.put(static_cast<std::uint32_t>(s.bodies.size()));
+  w.put(static_cast<std::uint32_t>(p.servo_velocity.size()));
+  w.put(static_cast<std::uint32_t>(p.targets.size()));
   for (const body_state& b : s.bodies) {
-    w.f64s(b.position);
-    w.f64s(b.quaternion);
-    w.f64s(b.linear_velocity);
-    w.f64s(b.angular_velocity);
+    put_all(w, b.position);
+    put_all(w, b.quaternion);
+    put_all(w, b.linear_velocity);
+    put_all(w, b.angular_velocity);
   }
-  w.f64(p.time);
-  w.f64(p.requested_time);
-  w.raw(&p.steps, sizeof p.steps);
-  for (double t : p.targets) w.f64(t);
-  for (double v : p.servo_velocity) w.f64(v);
-  w.f64(p.push_x);
-  w.f64(p.push_y);
-  w.u32(p.fallen ? 1U : 0U);
-  w.f64s(p.acc);
-  w.f64s(p.left_force);
-  w.f64s(p.right_force);
-  w.f64(p.max_penetration);
-  return std::move(w.data);
+  w.put(p.time);
+  w.put(p.requested_time);
+  w.put(p.steps);
+  put_all(w, p.targets);
+  put_all(w, p.servo_velocity);
+  w.put(p.push_x);
+  w.put(p.push_y);
+  w.put(std::uint32_t{p.fallen ? 1U : 0U});
+  put_all(w, p.acc);
+  put_all(w, p.left_force);
+  put_all(w, p.right_force);
+  w.put(p.max_penetration);
+  const auto& bytes = w.bytes();
+  const auto* first = reinterpret_cast<const std::uint8_t*>(bytes.data());
+  return {first, first + bytes.size()};
 }
 
 plant_snapshot decode_state_image(std::span<const std::uint8_t> image, std::size_t bodies,
                                   std::size_t joints, std::size_t servos,
                                   const std::string& source) {
-  reader r(image);
+  reader r(std::as_bytes(image), "robot state image is truncated");
   char magic[sizeof k_state_magic];
-  r.raw(magic, sizeof magic);
+  for (char& c : magic) c = r.get<char>();
   if (std::memcmp(magic, k_state_magic, sizeof magic) != 0) {
     throw std::invalid_argument("robot state image: not a robot_sim state");
   }
-  if (r.u32() != k_state_version) throw std::invalid_argument("robot state image: wrong version");
-  if (r.u32() != bodies || r.u32() != joints || r.u32() != servos) {
+  if (r.get<std::uint32_t>() != k_state_version)
+    throw std::invalid_argument("robot state image: wrong version");
+  if (r.get<std::uint32_t>() != bodies || r.get<std::uint32_t>() != joints ||
+      r.get<std::uint32_t>() != servos) {
     throw std::invalid_argument("robot state image: saved from a different model than " + source);
   }
   plant_snapshot s;
   s.bodies.resize(bodies);
   for (body_state& b : s.bodies) {
-    r.f64s(b.position);
-    r.f64s(b.quaternion);
-    r.f64s(b.linear_velocity);
-    r.f64s(b.angular_velocity);
+    get_all(r, b.position);
+    get_all(r, b.quaternion);
+    get_all(r, b.linear_velocity);
+    get_all(r, b.angular_velocity);
   }
   plant_state& p = s.plant;
-  p.time = r.f64();
-  p.requested_time = r.f64();
-  r.raw(&p.steps, sizeof p.steps);
+  p.time = r.get<double>();
+  p.requested_time = r.get<double>();
+  p.steps = r.get<decltype(p.steps)>();
   p.targets.resize(servos);
-  for (double& t : p.targets) t = r.f64();
+  get_all(r, p.targets);
   p.servo_velocity.resize(joints);
-  for (double& v : p.servo_velocity) v = r.f64();
-  p.push_x = r.f64();
-  p.push_y = r.f64();
-  p.fallen = r.u32() != 0;
-  r.f64s(p.acc);
-  r.f64s(p.left_force);
-  r.f64s(p.right_force);
-  p.max_penetration = r.f64();
+  get_all(r, p.servo_velocity);
+  p.push_x = r.get<double>();
+  p.push_y = r.get<double>();
+  p.fallen = r.get<std::uint32_t>() != 0;
+  get_all(r, p.acc);
+  get_all(r, p.left_force);
+  get_all(r, p.right_force);
+  p.max_penetration = r.get<double>();
   if (!r.at_end()) throw std::invalid_argument("robot state image: trailing bytes");
   return s;
 }
