@@ -19,7 +19,7 @@ constexpr std::uint32_t k_state_version = 1;
 
 using reader = common::byte_reader<std::invalid_argument>;
 
-// fixed-size vectors of doubles (std::array, Eigen::Vector3d)
+// vectors of doubles (std::array, std::vector, Eigen::Vector3d), their length known to the reader
 template <class Vector>
 void put_all(common::byte_writer& w, const Vector& v) {
   for (double x : v) w.put(x);
