@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "stop_signals.hpp"
+#include "stride/common/files.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/run_agents.hpp"
 #include "stride/remote/remote_placement.hpp"
@@ -19,14 +20,17 @@ using namespace stride::cosim;
 namespace {
 
 void write_table(const fs::path& file, const remote::table_snapshot& table) {
-  std::ofstream out(file, std::ios::binary);
-  out << "entry,value\n";
+  std::string text = "entry,value\n";
   char line[64];
   for (std::size_t i = 0; i < table.values.size(); ++i) {
     std::snprintf(line, sizeof line, "%zu,%.17g\n", i, table.values[i]);
-    out << line;
+    text += line;
   }
-  if (!out) throw error("cannot write " + file.string());
+  try {
+    common::write_file_atomically(file, text);
+  } catch (const std::runtime_error& e) {
+    throw error(e.what());
+  }
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "stride/common/files.hpp"
+
 namespace stride::cosim::gnuplot {
 
 namespace fs = std::filesystem;
@@ -33,9 +35,7 @@ std::string quote(const std::string& s) {
 }
 
 void write_text(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  common::write_file_atomically(file, text);
 }
 
 void run(const fs::path& script) {

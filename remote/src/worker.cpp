@@ -14,6 +14,7 @@
 #include "dds.hpp"
 #include "hosted.hpp"
 #include "protocol.hpp"
+#include "stride/common/files.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/run.hpp"
 
@@ -229,12 +230,8 @@ class host {
       throw std::runtime_error("the archive does not have the content hash it was sent with");
     }
     const fs::path file = cache_.path() / (hash + ".fmu");
-    {
-      std::ofstream out(file, std::ios::binary);
-      out.write(reinterpret_cast<const char*>(archive.data()),
-                static_cast<std::streamsize>(archive.size()));
-      if (!out) throw std::runtime_error("cannot write " + file.string());
-    }
+    common::write_file_atomically(
+        file, std::string_view(reinterpret_cast<const char*>(archive.data()), archive.size()));
     fmus_[hash] = cosim::fmu::load(file, options_.import);
     log("loaded " + fmus_[hash]->model_description().model_name + " (" + hash.substr(0, 12) + ")");
     return status::ok;

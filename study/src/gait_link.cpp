@@ -3,6 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "stride/common/files.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/gait/config_ini.hpp"
 #include "stride/gait/walking_params.hpp"
@@ -91,9 +92,7 @@ void write_best_config(const fs::path& out,
     const gait::param_info* p = gait::find_param(grid.dimensions()[d].name);
     if (p != nullptr) gait::set_param(params, *p, values[d]);
   }
-  std::ofstream f(out, std::ios::binary);
-  f << gait::make_walking_config_text(params);
-  if (!f) throw std::runtime_error("cannot write " + out.string());
+  common::write_file_atomically(out, gait::make_walking_config_text(params));
 }
 
 std::vector<fs::path> write_best_configs(const cosim::system_structure& system) {
