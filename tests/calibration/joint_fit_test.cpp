@@ -243,6 +243,84 @@ TEST_P(calibration_ik, an_outlier_servo_in_a_posture_plan_does_not_move_the_fit)
   EXPECT_THAT(format_report(robust), HasSubstr("P5   13 r_knee"));
 }
 
+// Every offset off its default, the rotational ones with assorted signs: roll, pitch and yaw
+// negative, positive, negative, hip_pitch below the default 13.
+gait::walking_params truth_rotated() {
+  gait::walking_params p;
+  p.x_offset = -12.4;
+  p.y_offset = 7.2;
+  p.z_offset = 24.1;
+  p.roll_offset = -2.6;
+  p.pitch_offset = 4.3;
+  p.yaw_offset = -3.8;
+  p.hip_pitch_offset = 9.7;
+  return p;
+}
+
+// 27 postures that move the rotational offsets only: delta_roll_offset -3/0/+5 x
+// delta_pitch_offset -6/0/+9 x delta_yaw_offset -5/0/+7 deg, and delta_hip_pitch_offset
+// -4/0/+6 deg in a Latin square over them (so each varies on its own). The levels are lopsided:
+// with -d/0/+d a delta applied with the wrong sign averages out and the fit still lands on the
+// truth. The 12 leg servos of each as untruncated counts, the offsets and deltas added here; each
+// is checked to truncate to what the walking generator's initialize() outputs for that posture.
+std::string rotational_plan(const gait::walking_params& p, ik_mode mode) {
+  std::string csv =
+      "delta_roll_offset,delta_pitch_offset,delta_yaw_offset,delta_hip_pitch_offset,id,count\n";
+  const double rolls[3] = {-3, 0, 5}, pitches[3] = {-6, 0, 9}, yaws[3] = {-5, 0, 7},
+               hips[3] = {-4, 0, 6};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int c = 0; c < 3; ++c) {
+        gait::walking_params q = p;
+        const double roll = rolls[a], pitch = pitches[b], yaw = yaws[c],
+                     hip = hips[(a + b + c) % 3];
+        q.roll_offset += roll;
+        q.pitch_offset += pitch;
+        q.yaw_offset += yaw;
+        q.hip_pitch_offset += hip;
+        const auto counts = counts_of(q, mode);
+        const gait::walking_state s = gait::walking(mode).initialize(q);
+        for (int id = 7; id <= 18; ++id) {
+          const double count = counts[static_cast<std::size_t>(id - 1)];
+          // the generator truncates the leg servo's joint term towards 2048
+          EXPECT_EQ(2048 + static_cast<int>(count - 2048), s.servo_count[id - 1])
+              << "servo " << id << " at deltas " << roll << " " << pitch << " " << yaw << " "
+              << hip;
+          char row[128];
+          std::snprintf(row, sizeof row, "%g,%g,%g,%g,%d,%.17g\n", roll, pitch, yaw, hip, id,
+                        count);
+          csv += row;
+        }
+      }
+  return csv;
+}
+
+TEST_P(calibration_ik, a_rotational_posture_plan_gives_back_roll_pitch_yaw_and_hip_pitch) {
+  const gait::walking_params p = truth_rotated();
+  const auto r = fit_joint_posture(parse_joint_target(rotational_plan(p, GetParam()), "rot.csv"),
+                                   gait::walking_params{}, options(GetParam(), "all"));
+  std::cout << format_report(r);
+  EXPECT_TRUE(r.converged) << r.termination;
+  EXPECT_EQ(r.postures.size(), 27u);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+  // exact readings: the truth reproduces all 324, and so must the fit
+  EXPECT_LT(r.final_cost, 1e-8);
+  for (std::size_t i = 0; i < offset_count; ++i) {
+    const offset_result& o = r.offsets[i];
+    ASSERT_TRUE(o.fitted && o.identifiable) << offset_table()[i].key << ": " << o.note;
+    // written to 4 decimals; the solver stops far below that
+    EXPECT_NEAR(o.after, get_offsets(p)[i], 1e-3) << offset_table()[i].key;
+  }
+  // the rotational offsets moved from their defaults the way the truth lies
+  for (const char* key : {"roll_offset", "pitch_offset", "yaw_offset", "hip_pitch_offset"}) {
+    const offset_result& o = r.offsets[*find_offset(key)];
+    EXPECT_EQ(o.after > o.before, get_offsets(p)[*find_offset(key)] > o.before) << key;
+  }
+  // the report's model at the fitted offsets plus each posture's deltas reproduces every reading
+  for (const joint_result& j : r.joints)
+    EXPECT_LT(std::abs(j.residual_after()), 0.01) << "P" << j.posture + 1 << " servo " << j.id;
+}
+
 TEST(calibration_joint_fit, walk_ready_pose_is_the_framework_default_stance) {
   const joint_target target = read_joint_target(k_data / "walk_ready.csv");
   const gait::walking_params defaults;
