@@ -3,7 +3,6 @@
 // stance and state_image.
 #include "stride/robot/robot_sim.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -18,6 +17,7 @@
 #include "servos.hpp"
 #include "stance.hpp"
 #include "state_image.hpp"
+#include "stride/robot/fall.hpp"
 
 namespace stride::robot {
 
@@ -158,9 +158,10 @@ struct robot_sim::impl {
       }
     }
     if (!model.fixed_base && !state.fallen) {
-      const Eigen::Matrix3d r = body_rotation(world.bodies[0]);
-      const double tilt = std::acos(std::clamp(r(2, 2), -1.0, 1.0));
-      if (tilt > cfg.fall_tilt || world.root_origin().z() < cfg.fall_height) state.fallen = true;
+      Eigen::Isometry3d root = Eigen::Isometry3d::Identity();
+      root.linear() = body_rotation(world.bodies[0]);
+      root.translation() = world.root_origin();
+      if (is_fallen(to_pose(root), cfg)) state.fallen = true;
     }
   }
 

@@ -1,5 +1,5 @@
-// Contacts (contacts.cpp): floor forces carry the robot, nothing touches in the air, world
-// shapes and self-collision stop bodies.
+// Contacts (contacts.cpp): floor forces carry the robot, each foot its share by statics, nothing
+// touches in the air, world shapes and self-collision stop bodies.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "oracle.hpp"
 #include "stride/robot/darwin.hpp"
 #include "stride/robot/robot_sim.hpp"
 
@@ -20,19 +21,46 @@ using stride::robot::robot_sim;
 const std::string k_data = STRIDE_TEST_DATA_DIR;
 const std::string k_darwin = std::string(STRIDE_SOURCE_DIR) + "/models/darwin-op/darwin-op.urdf";
 
-TEST(contacts, standing_feet_carry_the_weight) {
+// the weight from the URDF's <mass> elements, read afresh (docs/robot-model.md §2.1: 2.9253 kg)
+double urdf_weight() {
+  return stride::test::urdf_oracle(k_darwin).total_mass() * stride::test::k_gravity;
+}
+
+// floor forces averaged over `seconds` of a robot at rest, so that no single step's settling counts
+struct foot_loads {
+  double left = 0.0, right = 0.0, fx = 0.0, fy = 0.0;
+};
+foot_loads average_loads(robot_sim& sim, double seconds) {
+  foot_loads a;
+  const int n = static_cast<int>(std::lround(seconds / sim.config().physics_step));
+  for (int k = 0; k < n; ++k) {
+    sim.step(sim.config().physics_step);
+    const robot_outputs& o = sim.outputs();
+    a.left += o.left_foot_force[2] / n;
+    a.right += o.right_foot_force[2] / n;
+    a.fx += (o.left_foot_force[0] + o.right_foot_force[0]) / n;
+    a.fy += (o.left_foot_force[1] + o.right_foot_force[1]) / n;
+  }
+  return a;
+}
+
+TEST(contacts, standing_still_each_foot_carries_half_the_urdf_weight) {
   robot_sim sim(darwin::default_config(k_darwin));
   sim.step(1.0);
-  const robot_outputs& o = sim.outputs();
-  const double weight = sim.model().total_mass() * 9.81;
-  EXPECT_NEAR(o.left_foot_force[2] + o.right_foot_force[2], weight, 0.02 * weight);
-  EXPECT_NEAR(o.left_foot_force[2], 0.5 * weight, 0.1 * weight);
-  // standing still: the floor pushes up, hardly sideways
-  EXPECT_LT(std::hypot(o.left_foot_force[0] + o.right_foot_force[0],
-                       o.left_foot_force[1] + o.right_foot_force[1]),
-            0.02 * weight);
-  EXPECT_GT(o.max_penetration, 0.0);
-  EXPECT_LT(o.max_penetration, 0.005);
+  const foot_loads f = average_loads(sim, 1.0);
+  const double weight = urdf_weight();
+  ASSERT_NEAR(weight, 2.9253 * 9.81, 0.001);
+  // standing still the body does not accelerate, so the floor carries exactly the weight; the
+  // soft contacts have settled after a second (measured: within 0.001 %)
+  EXPECT_NEAR(f.left + f.right, weight, 0.001 * weight);
+  // the robot is mirror-symmetric but for the arms' pitch (page 9 shoulders −48°/+41°), which
+  // moves the centre of mass fore and aft, not sideways: each foot carries half
+  EXPECT_NEAR(f.left, 0.5 * weight, 0.005 * weight);
+  EXPECT_NEAR(f.right, 0.5 * weight, 0.005 * weight);
+  EXPECT_LT(std::hypot(f.fx, f.fy), 0.001 * weight);
+  // the soles sink into the soft contact by about half a millimetre (models/darwin-op/README.md)
+  EXPECT_GT(sim.outputs().max_penetration, 0.0001);
+  EXPECT_LT(sim.outputs().max_penetration, 0.002);
 }
 
 TEST(contacts, nothing_touches_in_the_air) {
@@ -85,6 +113,74 @@ TEST(contacts, self_collision_stops_a_folding_finger_and_can_be_switched_off) {
   // the tip ball (r 0.04) meets the first link (r 0.02) where 0.2·sin(π − θ) = 0.06
   EXPECT_NEAR(fold(true), std::numbers::pi - std::asin(0.3), 0.01);
   EXPECT_NEAR(fold(false), 3.0, 0.005);
+}
+
+// Statics of a body on two soles. The soles are 66 mm wide boxes centred 48 mm either side of
+// the middle (hip at y = ±37 mm, sole box at ±11 mm in the foot: docs/robot-model.md §1.3,
+// §3.3): the left sole's contacts lie in y ∈ [a, b], the right's in [−b, −a], a = 15 mm,
+// b = 81 mm, here widened by 3 mm for the small page 9 hip and ankle rolls. Balancing moments
+// about x: Σ y·F = W·y_com, hence F_left ≥ W·(y_com + a)/(a + b), whatever the pressure
+// distribution under each sole.
+constexpr double k_sole_inner = 0.012;
+constexpr double k_sole_outer = 0.084;
+
+// stands, then tilts both legs sideways by phi within 1 s (hip and ankle rolls +phi each: a
+// parallelogram, the torso stays level), which moves the body over the left foot for phi > 0
+robot_sim leaning_sideways(double phi) {
+  robot_sim sim(darwin::default_config(k_darwin));
+  const std::vector<double> stance = sim.config().initial_pose;
+  sim.step(0.5);
+  for (int k = 1; k <= 125; ++k) {
+    std::vector<double> targets = stance;
+    for (int id : {9, 10, 17, 18}) targets[static_cast<std::size_t>(id - 1)] += phi * k / 125.0;
+    sim.set_joint_targets(targets);
+    sim.step(0.008);
+  }
+  sim.step(1.0);
+  return sim;
+}
+
+TEST(contacts, the_body_moved_over_the_left_foot_loads_the_left_foot) {
+  robot_sim sim = leaning_sideways(0.35);
+  const double y_com = sim.outputs().com[1];
+  const foot_loads f = average_loads(sim, 0.5);
+  const double weight = urdf_weight();
+  ASSERT_FALSE(sim.outputs().fallen);
+  // about sin 0.35 · 0.16 m of leg from ankle to hip, for the body above the hips
+  EXPECT_GT(y_com, 0.035);
+  EXPECT_NEAR(f.left + f.right, weight, 0.001 * weight);
+  const double left_min = weight * (y_com + k_sole_inner) / (k_sole_inner + k_sole_outer);
+  EXPECT_GT(left_min, 0.55 * weight);
+  EXPECT_GE(f.left, left_min);
+  EXPECT_LE(f.right, weight - left_min + 0.001 * weight);
+}
+
+TEST(contacts, the_body_moved_over_the_right_foot_loads_the_right_foot) {
+  robot_sim sim = leaning_sideways(-0.35);
+  const double y_com = sim.outputs().com[1];
+  const foot_loads f = average_loads(sim, 0.5);
+  const double weight = urdf_weight();
+  ASSERT_FALSE(sim.outputs().fallen);
+  EXPECT_LT(y_com, -0.035);
+  EXPECT_NEAR(f.left + f.right, weight, 0.001 * weight);
+  const double right_min = weight * (-y_com + k_sole_inner) / (k_sole_inner + k_sole_outer);
+  EXPECT_GT(right_min, 0.55 * weight);
+  EXPECT_GE(f.right, right_min);
+  EXPECT_LE(f.left, weight - right_min + 0.001 * weight);
+}
+
+TEST(contacts, a_steady_sideways_push_is_held_by_floor_friction_in_world_axes) {
+  robot_sim sim(darwin::default_config(k_darwin));
+  sim.step(0.5);
+  sim.set_push(0.0, 3.0);  // towards the robot's left, world +y
+  sim.step(1.5);
+  const foot_loads f = average_loads(sim, 0.5);
+  ASSERT_FALSE(sim.outputs().fallen);
+  // at rest the floor's horizontal force cancels the push
+  EXPECT_NEAR(f.fy, -3.0, 0.05);
+  EXPECT_NEAR(f.fx, 0.0, 0.05);
+  // and the push's moment about the floor shifts load onto the left foot
+  EXPECT_GT(f.left, f.right);
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ struct robot_outputs {
   std::array<double, 3> right_foot_force{0.0, 0.0, 0.0};
   /// Deepest floor penetration of any collision shape in the last physics step, m.
   double max_penetration = 0.0;
-  /// Latched until reset(): tilt beyond fall_tilt or root link below fall_height.
+  /// Latched until reset(): tilt beyond fall_tilt or root link below fall_height (is_fallen).
   bool fallen = false;
 };
 
