@@ -1,0 +1,127 @@
+// `stride view` and `stride run --record-view` through the built CLI on short DARwIn walks:
+// what is recorded and at which interval, the frames a page gets (window, decimation), and the
+// errors for runs that lack what the viewer needs.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "process.hpp"
+#include "stride/cosim/archive.hpp"
+
+namespace stride::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using test::quoted;
+using test::run_command;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+const std::string k_cli = STRIDE_CLI;
+const fs::path k_walk = fs::path(STRIDE_SOURCE_DIR) / "models" / "walk.xml";
+
+std::string first_line(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+std::string line(const fs::path& file, int n) {
+  std::ifstream in(file);
+  std::string text;
+  for (int i = 0; i <= n; ++i) std::getline(in, text);
+  return text;
+}
+
+class view_cli : public ::testing::Test {
+ protected:
+  temp_dir scratch{"stride-view-test-"};
+  test::process_result stride(const std::string& args) {
+    return run_command("cd " + quoted(scratch.path()) + " && '" + k_cli + "' " + args,
+                       scratch.path());
+  }
+  // a walk of `seconds` into folder `name`
+  void walk(const std::string& name, const std::string& seconds, const std::string& args) {
+    const auto r = stride("run " + quoted(k_walk) + " --quiet --stop-time " + seconds + " -o " +
+                          name + " " + args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  fs::path out(const std::string& name) const { return scratch.path() / name; }
+};
+
+TEST_F(view_cli, help_documents_the_options) {
+  const auto r = stride("view --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* option :
+       {"--output", "--open", "--from", "--to", "--fps", "--robot", "--urdf"}) {
+    EXPECT_THAT(r.out, HasSubstr(option));
+  }
+  EXPECT_THAT(stride("run --help").out, HasSubstr("--record-view"));
+}
+
+TEST_F(view_cli, record_view_writes_the_pose_joints_and_falls_beside_the_results) {
+  walk("w", "1", "--record-view --record robot.base_x");
+  // the results keep what was asked; view.csv has the viewer's signals
+  EXPECT_EQ(first_line(out("w") / "results.csv"), "time,robot.base_x");
+  const std::string header = first_line(out("w") / "view.csv") + ",";
+  for (const char* column : {"robot.base_x", "robot.base_z", "robot.roll", "robot.yaw",
+                             "robot.joint_angle[1]", "robot.joint_angle[20]", "robot.fallen"}) {
+    EXPECT_THAT(header, HasSubstr(std::string(column) + ",")) << column;
+  }
+  // 0.032 s = 4 base steps of 8 ms: rows at 0, 0.032, 0.064
+  EXPECT_THAT(line(out("w") / "view.csv", 2), StartsWith("0.032,"));
+  EXPECT_THAT(line(out("w") / "view.csv", 3), StartsWith("0.064,"));
+  // another interval is taken to the nearest multiple of the base step: 0.05 s → 6 × 8 ms
+  walk("w2", "0.2", "--record-view --record-view-interval 0.05");
+  EXPECT_THAT(line(out("w2") / "view.csv", 2), StartsWith("0.048,"));
+}
+
+TEST_F(view_cli, the_page_holds_the_frames_of_the_window_and_fetches_nothing) {
+  walk("w", "4.8", "--record-view");
+  // every row: 4.8 / 0.032 + 1 = 151 frames
+  auto r = stride("view w --fps 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("151 frames of robot from view.csv"));
+  // 2 ≤ t ≤ 4: rows 63 (2.016 s) to 125 (4.0 s)
+  r = stride("view w --fps 0 --from 2 --to 4 -o window.html");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("63 frames"));
+  // 10 a second: the first row of each 0.1 s bin, 0 ... 4.8 s → 49 frames
+  r = stride("view w --fps 10 -o ten.html");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("49 frames"));
+  // self-contained: no script or resource from anywhere else
+  const std::string html = test::read_file(out("w") / "view.html");
+  for (const char* fetch :
+       {"<script src", "<link", "src=\"http", "href=\"http", "import(\"http", "import('http"}) {
+    EXPECT_EQ(html.find(fetch), std::string::npos) << fetch;
+  }
+  EXPECT_NE(html.find("WebGLRenderer"), std::string::npos) << "three.js inlined";
+}
+
+TEST_F(view_cli, a_run_without_the_pose_is_an_error_that_says_how_to_record_it) {
+  walk("bare", "0.16", "--record gait.phase");
+  auto r = stride("view bare");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, StartsWith("stride: error: bare: results.csv records no robot pose: the "
+                                "viewer needs P.base_x, P.base_y, P.base_z, P.roll, P.pitch"));
+  EXPECT_THAT(r.err, HasSubstr("stride run SYSTEM --record-view"));
+  EXPECT_FALSE(fs::exists(out("bare") / "view.html"));
+  // the pose without the joint angles: the missing columns are named
+  walk("pose", "0.16", "--record 'robot.base_?,robot.roll,robot.pitch,robot.yaw'");
+  r = stride("view pose");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("has no column robot.joint_angle[1], robot.joint_angle[2]"));
+  EXPECT_THAT(r.err, HasSubstr("--record-view"));
+  // not a run folder
+  fs::create_directories(out("empty"));
+  r = stride("view empty");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("holds no recorded signals"));
+}
+
+}  // namespace
+}  // namespace stride::cosim

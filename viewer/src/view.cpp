@@ -1,0 +1,148 @@
+// write_view: the run folder's frames and robot model into one page.
+#include "stride/viewer/view.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include "page.hpp"
+#include "page_data.hpp"
+#include "recorded_frames.hpp"
+#include "robot_urdf.hpp"
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/run_plots.hpp"
+#include "stride/robot/robot_model.hpp"
+
+namespace stride::viewer {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> view_signal_patterns() {
+  return {"*.base_x", "*.base_y", "*.base_z",         "*.roll",
+          "*.pitch",  "*.yaw",    "*.joint_angle[*]", "*.fallen"};
+}
+
+namespace {
+
+const char* k_how_to_record =
+    "record them with `stride run SYSTEM --record-view` (docs/viewer.md), or --record "
+    "'P.base_?,P.roll,P.pitch,P.yaw,P.joint_angle[*],P.fallen' for the plant component P";
+
+// the CSVs that may hold the frames: --record-view's file first, then the results
+std::vector<fs::path> candidate_files(const fs::path& run_dir) {
+  std::vector<fs::path> files;
+  if (fs::is_regular_file(run_dir / k_view_file)) files.push_back(run_dir / k_view_file);
+  const fs::path results = cosim::run_results_file(run_dir);
+  if (!results.empty() && fs::is_regular_file(results) &&
+      std::find(files.begin(), files.end(), results) == files.end()) {
+    files.push_back(results);
+  }
+  return files;
+}
+
+struct chosen_source {
+  fs::path file;
+  std::string prefix;
+};
+
+chosen_source choose_source(const view_options& o) {
+  const std::vector<fs::path> files = candidate_files(o.run_dir);
+  if (files.empty()) {
+    throw cosim::validation_error(o.run_dir.string() + " holds no recorded signals (" +
+                                  k_view_file + " or the results CSV): " + k_how_to_record);
+  }
+  std::string seen;
+  for (const auto& f : files) {
+    const std::vector<std::string> prefixes = full_pose_prefixes(csv_header(f));
+    for (const auto& p : prefixes) seen += (seen.empty() ? "" : ", ") + p;
+    if (o.robot.empty() && !prefixes.empty()) return {f, prefixes.front()};
+    if (std::find(prefixes.begin(), prefixes.end(), o.robot) != prefixes.end()) {
+      return {f, o.robot};
+    }
+  }
+  std::string names;
+  for (const auto& f : files) names += (names.empty() ? "" : ", ") + f.filename().string();
+  if (!o.robot.empty()) {
+    throw cosim::validation_error(o.run_dir.string() + ": no pose of '" + o.robot + "' in " +
+                                  names + " (recorded poses: " + (seen.empty() ? "none" : seen) +
+                                  ")");
+  }
+  throw cosim::validation_error(
+      o.run_dir.string() + ": " + names +
+      " records no robot pose: the viewer needs P.base_x, P.base_y, P.base_z, P.roll, P.pitch, "
+      "P.yaw and P.joint_angle[ID] of one plant component P; " +
+      k_how_to_record);
+}
+
+std::vector<int> servo_ids(const robot::robot_model& model) {
+  std::vector<int> ids;
+  for (const auto& j : model.joints) {
+    if (j.servo_id > 0) ids.push_back(j.servo_id);
+  }
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+}  // namespace
+
+view_report write_view(const view_options& o) {
+  if (!fs::is_directory(o.run_dir)) {
+    throw cosim::validation_error(o.run_dir.string() + " is not a folder");
+  }
+  if (o.from && o.to && *o.to < *o.from) {
+    throw cosim::validation_error("--to must not be before --from");
+  }
+  const chosen_source source = choose_source(o);
+
+  urdf_source urdf;
+  if (!o.urdf.empty()) {
+    std::ifstream in(o.urdf, std::ios::binary);
+    if (!in) throw cosim::validation_error(o.urdf.string() + ": cannot open the URDF");
+    urdf.text.assign(std::istreambuf_iterator<char>(in), {});
+    urdf.label = o.urdf.string();
+  } else {
+    urdf = find_run_urdf(o.run_dir, source.prefix);
+  }
+  // the plant's own reader: what it could not load (meshes, ...) is refused here the same way
+  const robot::robot_model model = robot::parse_robot_model(urdf.text, urdf.label);
+
+  frame_selection selection;
+  selection.from = o.from;
+  selection.to = o.to;
+  selection.fps = o.fps;
+  recorded_frames frames;
+  try {
+    frames = read_frames(source.file, source.prefix, servo_ids(model), {}, selection);
+  } catch (const cosim::validation_error& e) {
+    throw cosim::validation_error(std::string(e.what()) + ", which the joints of " + urdf.label +
+                                  " need: " + k_how_to_record);
+  }
+  if (frames.t.empty()) {
+    throw cosim::validation_error(source.file.string() + ": no recorded row inside the window");
+  }
+
+  page_content content;
+  content.title =
+      fs::absolute(o.run_dir).lexically_normal().filename().string() + " — " + source.prefix;
+  if (content.title.starts_with(" — ")) content.title = source.prefix;
+  content.parameters = other_parameters(o.run_dir, source.prefix);
+  const std::string html = render_page(content.title, page_json(model, frames, content));
+
+  view_report r;
+  r.output = o.output.empty() ? o.run_dir / "view.html" : o.output;
+  if (r.output.has_parent_path()) fs::create_directories(r.output.parent_path());
+  {
+    std::ofstream out(r.output, std::ios::binary | std::ios::trunc);
+    out << html;
+    out.close();
+    if (!out) throw std::runtime_error(r.output.string() + ": cannot write");
+  }
+  r.results = source.file;
+  r.urdf = urdf.label;
+  r.robot = source.prefix;
+  r.frames = frames.t.size();
+  r.bytes = html.size();
+  r.falls = frames.falls;
+  return r;
+}
+
+}  // namespace stride::viewer
