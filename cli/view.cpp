@@ -34,6 +34,19 @@ CLI::App* add_view_command(CLI::App& app, view_arguments& args) {
   view->add_option("--urdf", args.options.urdf,
                    "Draw this URDF instead of the one the run used (system.xml, the FMU)")
       ->check(CLI::ExistingFile);
+  view->add_option("--max-frames", args.options.max_frames,
+                   "Frames in the page at most; a longer window is thinned evenly (0: no limit)")
+      ->capture_default_str();
+  view->add_option("--episodes", args.options.episodes,
+                   "A column whose runs of equal values the page offers to replay one by one "
+                   "(default: a column named *.episode, e.g. learner.episode; or "
+                   "learner.rl_step)");
+  view->add_option("--episode", args.options.episode,
+                   "Replay only the rows at which the --episodes column has this value");
+  view->add_option("--state", args.options.state,
+                   "Columns shown in the panel as they change: patterns with * and ? (default: "
+                   "*.episode, *.rl_step, *.value[*], a learner's state)")
+      ->allow_extra_args(false);
   view->add_flag("--quiet,-q", args.quiet, "Print nothing");
   return view;
 }
@@ -45,6 +58,7 @@ int view(const view_arguments& args) {
                 r.output.string().c_str(), r.frames, r.robot.c_str(),
                 r.results.filename().string().c_str(), r.urdf.string().c_str(),
                 static_cast<double>(r.bytes) / 1e6);
+    if (r.episodes > 0) std::printf("%zu episodes to choose from\n", r.episodes);
     for (const double t : r.falls) std::printf("fall at t = %g s\n", t);
   }
   if (args.open) {

@@ -123,5 +123,31 @@ TEST_F(view_cli, a_run_without_the_pose_is_an_error_that_says_how_to_record_it) 
   EXPECT_THAT(r.err, HasSubstr("holds no recorded signals"));
 }
 
+TEST_F(view_cli, a_learner_run_offers_its_episodes_and_shows_its_state) {
+  // the demo learner cut to 2 episodes of 3 RL steps (about 10 s simulated)
+  const fs::path demo = fs::path(STRIDE_SOURCE_DIR) / "models" / "experiments" / "demo.xml";
+  auto r = stride("run " + quoted(demo) +
+                  " --quiet --no-plots -o learn --record-view --set learner.total_steps=6 "
+                  "--set learner.steps_per_episode=3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = stride("view learn --fps 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("2 episodes to choose from"));
+  const std::string html = test::read_file(out("learn") / "view.html");
+  EXPECT_NE(html.find("{\"label\":\"learner.episode 1\",\"from\":0,"), std::string::npos);
+  // the state's values are named by the gait parameters they drive
+  for (const char* name : {"\"name\":\"gait.period_time\"", "\"name\":\"gait.swing_right_left\"",
+                           "\"name\":\"learner.rl_step\""}) {
+    EXPECT_NE(html.find(name), std::string::npos) << name;
+  }
+  // one episode alone: its rows only, from the first row at which learner.episode is 2
+  r = stride("view learn --fps 0 --episode 2 -o two.html");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("1 episodes to choose from"));
+  r = stride("view learn --episode 7 -o none.html");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("no row with learner.episode = 7"));
+}
+
 }  // namespace
 }  // namespace stride::cosim

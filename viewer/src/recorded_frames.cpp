@@ -63,6 +63,7 @@ recorded_frames read_frames(const fs::path& file, const std::string& prefix,
   }
   std::vector<std::size_t> state;
   for (const auto& s : state_columns) state.push_back(column(s));
+  const std::size_t span = selection.span_column.empty() ? 0 : column(selection.span_column);
   if (!missing.empty()) {
     std::string names;
     for (const auto& m : missing) names += (names.empty() ? "" : ", ") + m;
@@ -106,6 +107,11 @@ recorded_frames read_frames(const fs::path& file, const std::string& prefix,
     const double t = number(time);
     if (selection.from && t < *selection.from - 1e-9) continue;
     if (selection.to && t > *selection.to + 1e-9) break;
+    if (!selection.span_column.empty()) {
+      const double v = number(span);
+      if (f.spans.empty() || f.spans.back().value != v) f.spans.push_back({v, t, t});
+      f.spans.back().to = t;
+    }
     bool fallen = false;
     if (fallen_it != index.end()) fallen = number(fallen_it->second) != 0.0;
     const bool falls_now = fallen && !was_fallen;
@@ -125,6 +131,57 @@ recorded_frames read_frames(const fs::path& file, const std::string& prefix,
     for (std::size_t s = 0; s < state.size(); ++s) f.state[s].second.push_back(number(state[s]));
   }
   return f;
+}
+
+void thin_frames(recorded_frames& f, std::size_t max_frames) {
+  if (max_frames == 0 || f.t.size() <= max_frames) return;
+  const std::size_t every = (f.t.size() + max_frames - 1) / max_frames;
+  std::vector<std::size_t> keep;
+  for (std::size_t i = 0; i < f.t.size(); ++i) {
+    const bool falls = !f.fallen.empty() && f.fallen[i] != 0 && (i == 0 || f.fallen[i - 1] == 0);
+    if (i % every == 0 || falls) keep.push_back(i);
+  }
+  const auto pick = [&](auto& values) {
+    if (values.empty()) return;
+    std::remove_reference_t<decltype(values)> kept;
+    kept.reserve(keep.size());
+    for (const std::size_t i : keep) kept.push_back(values[i]);
+    values = std::move(kept);
+  };
+  for (auto* v : {&f.x, &f.y, &f.z, &f.roll, &f.pitch, &f.yaw}) pick(*v);
+  for (auto& q : f.q) pick(q);
+  pick(f.fallen);
+  for (auto& s : f.state) pick(s.second);
+  pick(f.t);
+}
+
+value_span find_span(const fs::path& file, const std::string& column, double value) {
+  std::ifstream in(file);
+  if (!in) throw cosim::validation_error(file.string() + ": cannot open the results file");
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = text::csv_fields(line);
+  const auto at = std::find(header.begin(), header.end(), column);
+  if (at == header.end()) throw cosim::validation_error(file.string() + " has no column " + column);
+  const std::size_t c = static_cast<std::size_t>(at - header.begin());
+  std::optional<value_span> found;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = text::csv_fields(line);
+    if (fields.size() != header.size()) continue;
+    const auto v = text::parse_double(fields[c]);
+    const auto t = text::parse_double(fields[0]);
+    if (!v || !t || *v != value) {
+      if (found) break;  // the span has ended
+      continue;
+    }
+    if (!found) found = value_span{value, *t, *t};
+    found->to = *t;
+  }
+  if (!found) {
+    throw cosim::validation_error(file.string() + ": no row with " + column + " = " +
+                                  text::format_double(value));
+  }
+  return *found;
 }
 
 }  // namespace stride::viewer

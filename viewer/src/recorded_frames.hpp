@@ -18,6 +18,15 @@ struct frame_selection {
   std::optional<double> from;
   std::optional<double> to;
   double fps = 30;  ///< 0 = every row
+  /// a column whose runs of equal values are spans the page offers (a learner's episode)
+  std::string span_column;
+};
+
+/// A run of rows with the same value of frame_selection::span_column.
+struct value_span {
+  double value = 0;
+  double from = 0;
+  double to = 0;
 };
 
 struct recorded_frames {
@@ -29,7 +38,16 @@ struct recorded_frames {
   std::vector<double> falls;  ///< times at which P.fallen became true (every row, not decimated)
   /// extra columns shown as they change (learner state), by name
   std::vector<std::pair<std::string, std::vector<double>>> state;
+  std::vector<value_span> spans;  ///< of frame_selection::span_column (every row in the window)
 };
+
+/// Keeps every `k`-th frame (and every frame at which the robot falls) so that at most
+/// `max_frames` remain.
+void thin_frames(recorded_frames& frames, std::size_t max_frames);
+
+/// The times of the rows of `file` at which `column` equals `value`: the first and the last.
+/// \throws cosim::validation_error when there is no such column or row.
+value_span find_span(const std::filesystem::path& file, const std::string& column, double value);
 
 /// The header of a CSV file, split into column names.
 std::vector<std::string> csv_header(const std::filesystem::path& file);

@@ -88,4 +88,12 @@ std::vector<std::string> other_parameters(const fs::path& run_dir, const std::st
   return out;
 }
 
+std::map<std::string, std::string> connection_targets(const fs::path& run_dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& c : run_system(run_dir).connections) {
+    if (c.from.find_first_of("*:") == std::string::npos) out.emplace(c.from, c.to);
+  }
+  return out;
+}
+
 }  // namespace stride::viewer

@@ -5,6 +5,7 @@
 #define STRIDE_VIEWER_ROBOT_URDF_HPP
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ urdf_source find_run_urdf(const std::filesystem::path& run_dir, const std::strin
 /// "comp.var = value" (the gait parameters in force, for the page's panel).
 std::vector<std::string> other_parameters(const std::filesystem::path& run_dir,
                                           const std::string& component);
+
+/// The target of every connection of the run's system whose source is one variable ("comp.var" →
+/// "comp.var").
+std::map<std::string, std::string> connection_targets(const std::filesystem::path& run_dir);
 
 }  // namespace stride::viewer
 

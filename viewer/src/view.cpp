@@ -8,7 +8,9 @@
 #include "page_data.hpp"
 #include "recorded_frames.hpp"
 #include "robot_urdf.hpp"
+#include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
+#include "stride/cosim/observers.hpp"
 #include "stride/cosim/run_plots.hpp"
 #include "stride/robot/robot_model.hpp"
 
@@ -17,8 +19,8 @@ namespace stride::viewer {
 namespace fs = std::filesystem;
 
 std::vector<std::string> view_signal_patterns() {
-  return {"*.base_x", "*.base_y", "*.base_z",         "*.roll",
-          "*.pitch",  "*.yaw",    "*.joint_angle[*]", "*.fallen"};
+  return {"*.base_x",         "*.base_y", "*.base_z",  "*.roll",    "*.pitch",   "*.yaw",
+          "*.joint_angle[*]", "*.fallen", "*.episode", "*.rl_step", "*.value[*]"};
 }
 
 namespace {
@@ -73,6 +75,22 @@ chosen_source choose_source(const view_options& o) {
       k_how_to_record);
 }
 
+// the first column matching one of `patterns`, or every one
+std::vector<std::string> matching(const std::vector<std::string>& columns,
+                                  const std::vector<std::string>& patterns, bool first) {
+  std::vector<std::string> out;
+  for (const auto& c : columns) {
+    for (const auto& p : patterns) {
+      if (c != "time" && cosim::glob_match(p, c)) {
+        out.push_back(c);
+        if (first) return out;
+        break;
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<int> servo_ids(const robot::robot_model& model) {
   std::vector<int> ids;
   for (const auto& j : model.joints) {
@@ -105,13 +123,37 @@ view_report write_view(const view_options& o) {
   // the plant's own reader: what it could not load (meshes, ...) is refused here the same way
   const robot::robot_model model = robot::parse_robot_model(urdf.text, urdf.label);
 
+  // a learner's episodes and state, when recorded (view_signal_patterns records them)
+  const std::vector<std::string> columns = csv_header(source.file);
   frame_selection selection;
   selection.from = o.from;
   selection.to = o.to;
   selection.fps = o.fps;
+  selection.span_column = o.episodes;
+  if (selection.span_column.empty()) {
+    const auto found = matching(columns, {"*.episode"}, true);
+    if (!found.empty()) selection.span_column = found.front();
+  }
+  if (o.episode) {
+    if (selection.span_column.empty()) {
+      throw cosim::validation_error("--episode: " + source.file.string() +
+                                    " has no episode column (name one with --episodes)");
+    }
+    const value_span span = find_span(source.file, selection.span_column, *o.episode);
+    selection.from = span.from;
+    selection.to = span.to;
+  }
+  const std::vector<std::string> state = matching(
+      columns,
+      o.state.empty() ? std::vector<std::string>{"*.episode", "*.rl_step", "*.value[*]"} : o.state,
+      false);
+  if (!o.state.empty() && state.empty()) {
+    throw cosim::validation_error("--state: no column of " + source.file.string() + " matches");
+  }
   recorded_frames frames;
   try {
-    frames = read_frames(source.file, source.prefix, servo_ids(model), {}, selection);
+    frames = read_frames(source.file, source.prefix, servo_ids(model), state, selection);
+    thin_frames(frames, o.max_frames);
   } catch (const cosim::validation_error& e) {
     throw cosim::validation_error(std::string(e.what()) + ", which the joints of " + urdf.label +
                                   " need: " + k_how_to_record);
@@ -125,6 +167,22 @@ view_report write_view(const view_options& o) {
       fs::absolute(o.run_dir).lexically_normal().filename().string() + " — " + source.prefix;
   if (content.title.starts_with(" — ")) content.title = source.prefix;
   content.parameters = other_parameters(o.run_dir, source.prefix);
+  // a state column is named by what it drives, when a connection says so (learner.value[1]
+  // drives gait.period_time)
+  const auto targets = connection_targets(o.run_dir);
+  if (o.state.empty()) {
+    // by default a learner's values that drive nothing (unused grid dimensions) are left out
+    std::erase_if(frames.state, [&](const auto& s) {
+      return cosim::glob_match("*.value[*]", s.first) && !targets.contains(s.first);
+    });
+  }
+  for (auto& [name, values] : frames.state) {
+    if (const auto it = targets.find(name); it != targets.end()) name = it->second;
+  }
+  for (const value_span& span : frames.spans) {
+    content.episodes.push_back(
+        {selection.span_column + " " + text::format_double(span.value), span.from, span.to});
+  }
   const std::string html = render_page(content.title, page_json(model, frames, content));
 
   view_report r;
@@ -142,6 +200,7 @@ view_report write_view(const view_options& o) {
   r.frames = frames.t.size();
   r.bytes = html.size();
   r.falls = frames.falls;
+  r.episodes = content.episodes.size();
   return r;
 }
 

@@ -168,7 +168,7 @@
       data.episodes.forEach((e, i) => {
         const o = document.createElement('option');
         o.value = String(i);
-        o.textContent = e.label;
+        o.textContent = e.label + ' (' + e.from + '–' + e.to + ' s)';
         select.appendChild(o);
       });
       select.addEventListener('change', () => choose_episode(Number(select.value)));

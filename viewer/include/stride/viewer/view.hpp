@@ -34,6 +34,16 @@ struct view_options {
   std::string robot;
   /// the URDF to draw; empty = the one the run used (system.xml and the component's FMU)
   std::filesystem::path urdf;
+  /// frames in the page at most: a longer window is thinned evenly (0: no limit)
+  std::size_t max_frames = 20000;
+  /// a column whose runs of equal values the page offers to replay one by one (a learner's
+  /// episodes or RL steps); empty = the first column named `*.episode`, if any
+  std::string episodes;
+  /// replay only the rows at which the `episodes` column has this value (e.g. episode 120)
+  std::optional<double> episode;
+  /// columns shown in the panel as they change (patterns with * and ?); empty = every column
+  /// named `*.episode`, `*.rl_step` or `*.value[*]` (a learner's state), if any
+  std::vector<std::string> state;
 };
 
 struct view_report {
@@ -44,6 +54,7 @@ struct view_report {
   std::size_t frames = 0;
   std::size_t bytes = 0;
   std::vector<double> falls;  ///< times at which `P.fallen` became true
+  std::size_t episodes = 0;   ///< spans of view_options::episodes in the page
 };
 
 /// Writes the page. \throws std::runtime_error (cosim::validation_error for what the user can
