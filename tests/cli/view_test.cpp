@@ -123,6 +123,29 @@ TEST_F(view_cli, a_run_without_the_pose_is_an_error_that_says_how_to_record_it) 
   EXPECT_THAT(r.err, HasSubstr("holds no recorded signals"));
 }
 
+TEST_F(view_cli, the_model_is_the_urdf_the_run_used_or_the_one_named) {
+  // the plant's urdf parameter names a file: the page draws that file
+  const fs::path urdf = out("my-robot.urdf");
+  fs::copy_file(fs::path(STRIDE_SOURCE_DIR) / "models" / "darwin-op" / "darwin-op.urdf", urdf);
+  walk("custom", "0.16", "--record-view --set robot.urdf=" + quoted(urdf));
+  auto r = stride("view custom");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("robot " + urdf.string()));
+  // without it, the URDF in the FMU's resources
+  walk("plain", "0.16", "--record-view");
+  r = stride("view plain");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("robot robot.fmu:resources/darwin-op.urdf"));
+  // --urdf draws another file, read as the plant reads it: a mesh is refused, naming the link
+  std::ofstream(out("mesh.urdf"))
+      << "<robot name='m'><link name='base'><inertial><mass value='1'/><inertia ixx='1' "
+         "iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/></inertial><collision><geometry><mesh "
+         "filename='base.stl'/></geometry></collision></link></robot>";
+  r = stride("view plain --urdf mesh.urdf -o mesh.html");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("link 'base': mesh collision geometry is not supported"));
+}
+
 TEST_F(view_cli, a_learner_run_offers_its_episodes_and_shows_its_state) {
   // the demo learner cut to 2 episodes of 3 RL steps (about 10 s simulated)
   const fs::path demo = fs::path(STRIDE_SOURCE_DIR) / "models" / "experiments" / "demo.xml";
