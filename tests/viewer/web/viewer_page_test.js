@@ -1,7 +1,8 @@
 // The viewer's page (viewer/web/viewer.js) in headless Chromium, from file:// with no server:
 // a 12 s walk recorded with --record-view loads without console errors, shows a robot at t = 0
 // and at t = 10 s, and the two screenshots differ where the robot is; a pushed run that falls
-// has its fall on the timeline and the fall badge at the recorded fall time.
+// has its fall on the timeline and the fall badge at the recorded fall time; a learner run
+// replays the episode chosen, with its state in the panel.
 // node --experimental-websocket viewer_page_test.js STRIDE SOURCE_DIR SCRATCH_DIR
 'use strict';
 const assert = require('assert/strict');
@@ -15,9 +16,9 @@ fs.rmSync(scratch, {recursive: true, force: true});
 fs.mkdirSync(scratch, {recursive: true});
 const walk = path.join(source, 'models', 'walk.xml');
 
-function run_and_view(name, args) {
+function run_and_view(name, args, system = walk) {
   const dir = path.join(scratch, name);
-  execFileSync(stride, ['run', walk, '--record-view', '--quiet', '-o', dir, ...args]);
+  execFileSync(stride, ['run', system, '--record-view', '--quiet', '-o', dir, ...args]);
   const r = spawnSync(stride, ['view', dir, '--quiet']);
   assert.equal(r.status, 0, r.stderr.toString());
   return 'file://' + path.join(dir, 'view.html');
@@ -40,6 +41,10 @@ async function main() {
   const walk_page = run_and_view('walk', ['--stop-time', '12']);
   // a constant 2 N sideways push topples the walking robot within a second
   const fall_page = run_and_view('fall', ['--stop-time', '3', '--set', 'robot.push_y=2']);
+  // the demo learner cut to 2 episodes of 3 RL steps
+  const learn_page = run_and_view(
+      'learn', ['--no-plots', '--set', 'learner.total_steps=6', '--set', 'learner.steps_per_episode=3'],
+      path.join(source, 'models', 'experiments', 'demo.xml'));
   const browser = await launch({width: 800, height: 600});
   try {
     const shots = [];
@@ -85,6 +90,36 @@ async function main() {
     assert.equal(await browser.evaluate(
         'getComputedStyle(document.getElementById("fall-badge")).display'), 'inline-block');
     fs.writeFileSync(path.join(scratch, 'fall.png'), await browser.screenshot());
+
+    // a learner run: choose episode 2, its first frame is shown with the state of that moment
+    assert.equal(await browser.open(learn_page + '#t=0'), 'ready');
+    const learn = await browser.evaluate(
+        'JSON.parse(document.getElementById("stride-data").textContent)');
+    assert.equal(learn.episodes.length, 2);
+    const second = learn.episodes[1];
+    await browser.evaluate('const s = document.getElementById("episode"); s.value = "1";' +
+                           's.dispatchEvent(new Event("change")); 0');
+    const k = await browser.evaluate('stride_view.frame()');
+    assert.ok(learn.frames.t[k] <= second.from && learn.frames.t[k] > second.from - 0.07,
+              `episode 2 starts at ${second.from}, shown ${learn.frames.t[k]}`);
+    const period = learn.state.find((s) => s.name === 'gait.period_time');
+    assert.ok(period, 'gait.period_time in the state');
+    const shown = await browser.evaluate(
+        '[...document.querySelectorAll("#state tr")].map((r) => r.textContent)');
+    assert.ok(shown.includes('gait.period_time' + period.values[k]), shown.join('; '));
+    // episode 1 played at 8x stops where episode 2 begins
+    await browser.evaluate('const e = document.getElementById("episode"); e.value = "0";' +
+                           'e.dispatchEvent(new Event("change"));' +
+                           'document.getElementById("speed").value = "8";' +
+                           'document.getElementById("speed").dispatchEvent(new Event("change"));' +
+                           'stride_view.play(true); 0');
+    const last = learn.frames.t.findLastIndex((t) => t <= learn.episodes[0].to + 1e-9);
+    assert.ok(last < learn.frames.t.length - 1);
+    const until = Date.now() + 20000;
+    while (await browser.evaluate('stride_view.frame()') < last && Date.now() < until) {
+      await new Promise((r) => setTimeout(r, 100));
+    }
+    assert.equal(await browser.evaluate('stride_view.frame()'), last, 'stopped at the end');
 
     assert.deepEqual(browser.errors, [], 'console errors');
   } finally {
