@@ -146,6 +146,22 @@ TEST_F(view_cli, the_model_is_the_urdf_the_run_used_or_the_one_named) {
   EXPECT_THAT(r.err, HasSubstr("link 'base': mesh collision geometry is not supported"));
 }
 
+TEST_F(view_cli, several_robots_show_the_first_or_the_one_named) {
+  const fs::path walkers = fs::path(STRIDE_SOURCE_DIR) / "models" / "walkers.xml";
+  auto r = stride("run " + quoted(walkers) + " --quiet --stop-time 0.16 -o four --record-view");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = stride("view four");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("frames of robot[1] from view.csv"));
+  r = stride("view four --robot 'robot[3]' -o three.html");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("frames of robot[3] from view.csv"));
+  r = stride("view four --robot robot -o none.html");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("no pose of 'robot' in view.csv, results.csv (recorded poses: "
+                               "robot[1], robot[2], robot[3], robot[4])"));
+}
+
 TEST_F(view_cli, a_learner_run_offers_its_episodes_and_shows_its_state) {
   // the demo learner cut to 2 episodes of 3 RL steps (about 10 s simulated)
   const fs::path demo = fs::path(STRIDE_SOURCE_DIR) / "models" / "experiments" / "demo.xml";

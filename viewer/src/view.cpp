@@ -52,10 +52,12 @@ chosen_source choose_source(const view_options& o) {
     throw cosim::validation_error(o.run_dir.string() + " holds no recorded signals (" +
                                   k_view_file + " or the results CSV): " + k_how_to_record);
   }
-  std::string seen;
+  std::vector<std::string> seen;  // every pose recorded, once
   for (const auto& f : files) {
     const std::vector<std::string> prefixes = full_pose_prefixes(csv_header(f));
-    for (const auto& p : prefixes) seen += (seen.empty() ? "" : ", ") + p;
+    for (const auto& p : prefixes) {
+      if (std::find(seen.begin(), seen.end(), p) == seen.end()) seen.push_back(p);
+    }
     if (o.robot.empty() && !prefixes.empty()) return {f, prefixes.front()};
     if (std::find(prefixes.begin(), prefixes.end(), o.robot) != prefixes.end()) {
       return {f, o.robot};
@@ -64,8 +66,10 @@ chosen_source choose_source(const view_options& o) {
   std::string names;
   for (const auto& f : files) names += (names.empty() ? "" : ", ") + f.filename().string();
   if (!o.robot.empty()) {
+    std::string poses;
+    for (const auto& p : seen) poses += (poses.empty() ? "" : ", ") + p;
     throw cosim::validation_error(o.run_dir.string() + ": no pose of '" + o.robot + "' in " +
-                                  names + " (recorded poses: " + (seen.empty() ? "none" : seen) +
+                                  names + " (recorded poses: " + (poses.empty() ? "none" : poses) +
                                   ")");
   }
   throw cosim::validation_error(
