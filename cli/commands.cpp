@@ -125,6 +125,7 @@ int run(const run_arguments& args, const run_extension& extension) {
   options.build.placements.push_back(std::make_shared<remote::remote_placement>(args.dds, limits));
   options.record_signals = record_patterns(args.signals);
   options.stop_when = args.stop_when;
+  options.extra_records = args.extra_records;
   options.force_output = args.force;
   options.interrupt = &catch_stop_signals();
   if (args.record_interval) {

@@ -34,6 +34,7 @@ struct run_arguments {
   remote::dds_settings dds;              ///< where components with a worker are looked for
   double worker_timeout = 10;            ///< seconds to wait for a worker to appear
   int agents = 0;                        ///< --agents: replaces the <agents> count (0: keep)
+  std::vector<cosim::extra_record> extra_records;  ///< recordings beside the results
 };
 
 struct validate_arguments {

@@ -10,11 +10,13 @@
 #include "installed_files.hpp"
 #include "plot.hpp"
 #include "stride/cosim/algorithm.hpp"
+#include "stride/cosim/error.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/study/run_hooks.hpp"
 #include "stride/study/suite_assertions.hpp"
 #include "stride/suite/assertions.hpp"
 #include "sweep.hpp"
+#include "view.hpp"
 #include "workers.hpp"
 
 int main(int argc, char** argv) {
@@ -72,6 +74,14 @@ int main(int argc, char** argv) {
   std::string record_interval;
   run->add_option("--record-interval", record_interval,
                   "Recording interval in seconds (a multiple of the base step)");
+  bool record_view = false;
+  std::string record_view_interval = stride::viewer::k_view_interval;
+  run->add_flag("--record-view", record_view,
+                "Also record what `stride view` replays (base pose, joint angles, falls of every "
+                "plant component) into view.csv, every --record-view-interval");
+  run->add_option("--record-view-interval", record_view_interval,
+                  "Interval of --record-view, s (the nearest multiple of the base step)")
+      ->capture_default_str();
   run->add_option("--save-reference", run_args.save_reference,
                   "Also write the results CSV to this file: a reference for `stride test`");
   run->add_flag("--no-plots", run_args.no_plots,
@@ -137,6 +147,9 @@ int main(int argc, char** argv) {
 
   stride::cli::add_sweep_command(app, stride::cli::study_sweep_extension());  // runs itself
 
+  stride::cli::view_arguments view_args;
+  auto* view = stride::cli::add_view_command(app, view_args);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -144,6 +157,19 @@ int main(int argc, char** argv) {
       if (!system_file.empty()) run_args.system = system_file;
       if (!stop_time.empty()) run_args.stop_time = stop_time;
       if (!record_interval.empty()) run_args.record_interval = record_interval;
+      if (record_view) {
+        // the viewer's preset: its signals at about 30 frames a second, beside the results
+        stride::cosim::extra_record view_record;
+        view_record.file = stride::viewer::k_view_file;
+        view_record.signals = stride::viewer::view_signal_patterns();
+        view_record.origin = "--record-view";
+        try {
+          view_record.interval = stride::cosim::parse_duration(record_view_interval);
+        } catch (const std::exception& e) {
+          throw stride::cosim::validation_error(std::string("--record-view-interval: ") + e.what());
+        }
+        run_args.extra_records.push_back(std::move(view_record));
+      }
       // the DARwIn study: its demo as the default system, its checks and reports
       stride::cli::run_extension study;
       study.default_system_xml = stride::study::demo_scenario_xml();
@@ -169,6 +195,7 @@ int main(int argc, char** argv) {
       // the study adds the learner's figures and summary for its runs
       return stride::cli::plot(plot_args, stride::study::plot_learner_runs);
     }
+    if (*view) return stride::cli::view(view_args);
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;

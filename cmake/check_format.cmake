@@ -1,7 +1,7 @@
 # cmake -DSOURCE_DIR=<repo> -DCLANG_FORMAT=<exe> -P check_format.cmake
 # Fails when any C/C++ source of the project differs from what .clang-format prescribes.
 set(files "")
-foreach(dir common fmi components orchestrator suite remote study cli tests bench calibration examples fuzz)
+foreach(dir common fmi components orchestrator suite remote study viewer cli tests bench calibration examples fuzz)
   file(GLOB_RECURSE found "${SOURCE_DIR}/${dir}/*.cpp" "${SOURCE_DIR}/${dir}/*.hpp"
                           "${SOURCE_DIR}/${dir}/*.c" "${SOURCE_DIR}/${dir}/*.h")
   list(APPEND files ${found})

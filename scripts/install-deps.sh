@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Stride needs; packages already present are skipped, so a second
-# run does nothing. Needs root (or sudo) and apt.
+# Installs the Debian packages Stride needs, then the npm packages of package-lock.json (three.js,
+# which the run viewer inlines into its pages); what is already present is skipped, so a second
+# run does nothing. Needs root (or sudo) and apt; npm reads the registry only when node_modules/
+# does not match the lock file.
 set -euo pipefail
 
 packages=(
@@ -11,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3
   clang libclang-rt-dev llvm
+  nodejs chromium
 )
 
 missing=()
@@ -20,13 +23,27 @@ for p in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
-fi
+# Debian's nodejs comes without npm (NodeSource's includes it)
+command -v npm >/dev/null 2>&1 || missing+=(npm)
 
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
-echo "install-deps: installing ${missing[*]}"
-$sudo apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+else
+  echo "install-deps: installing ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# npm packages, exactly as package-lock.json pins them (npm ci); skipped when installed already
+root="$(cd "$(dirname "$0")/.." && pwd)"
+if ! node -e 'const l = require(process.argv[1]), i = require(process.argv[2]);
+              for (const [k, v] of Object.entries(l.packages)) {
+                if (k && (!i.packages[k] || i.packages[k].version !== v.version)) process.exit(1);
+              }' "$root/package-lock.json" "$root/node_modules/.package-lock.json" 2>/dev/null; then
+  echo "install-deps: npm ci (package-lock.json)"
+  (cd "$root" && npm ci --no-audit --no-fund --loglevel=error)
+else
+  echo "install-deps: npm packages present"
+fi

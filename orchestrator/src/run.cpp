@@ -1,5 +1,6 @@
 #include "stride/cosim/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -350,6 +351,30 @@ run_report run_system(system_structure system, const run_options& options) {
                              format_seconds(built.base_step) + " s");
     }
   }
+  // further recordings: resolved and checked with the results' signals, before anything is
+  // written
+  std::vector<std::pair<std::vector<variable_id>, std::optional<duration>>> extras;
+  for (const extra_record& e : options.extra_records) {
+    const std::string what = e.origin.empty() ? e.file : e.origin;
+    if (e.file.empty() || e.file == "system.xml" || e.file == "manifest.json" ||
+        (system.record.enabled && e.file == system.record.file)) {
+      throw validation_error(what + ": '" + e.file + "' is not a free file name in the run folder");
+    }
+    std::vector<variable_id> vars;
+    for (const auto& pattern : e.signals) {
+      for (const auto& v : find_variables(ex, pattern)) {
+        if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
+      }
+    }
+    if (vars.empty()) throw validation_error(what + ": no variable of the system to record");
+    std::optional<duration> interval;
+    if (e.interval) {
+      const auto steps = std::max<std::int64_t>(
+          1, (e.interval->count() + built.base_step.count() / 2) / built.base_step.count());
+      interval = built.base_step * steps;
+    }
+    extras.emplace_back(std::move(vars), interval);
+  }
   for (const auto& pattern : options.stop_when) {
     const std::string what = "--stop-when '" + pattern + "': ";
     const auto found = find_variables(ex, pattern);
@@ -393,6 +418,13 @@ run_report run_system(system_structure system, const run_options& options) {
       const std::string where = system.record.where.str();
       throw validation_error((where.empty() ? "" : where + ": ") + e.what());
     }
+  }
+  for (std::size_t i = 0; i < extras.size(); ++i) {
+    report.extra_files.push_back(report.output_dir / options.extra_records[i].file);
+    auto recorder = std::make_shared<csv_recorder>(report.extra_files.back(), extras[i].first,
+                                                   extras[i].second);
+    if (saved) recorder->continue_after(saved->time);
+    ex.add_observer(std::move(recorder));
   }
   if (options.progress) {
     ex.add_observer(std::make_shared<progress_display>(built.stop, stderr, std::nullopt,

@@ -23,6 +23,17 @@ std::string_view version() noexcept;
 /// condition "comp.var" that held, or "component NAME requested termination".
 std::string end_reason(const run_result& result);
 
+/// A recording beside the results: its own CSV in the output folder, its own signals and
+/// interval (e.g. what a viewer needs, at a frame rate, without bloating the results).
+struct extra_record {
+  std::string file;                  ///< relative to the output folder
+  std::vector<std::string> signals;  ///< patterns with * and ?; those matching nothing are skipped
+  /// The interval wanted; run_system takes the positive multiple of the base step closest to it
+  /// (nullopt: every base step).
+  std::optional<duration> interval;
+  std::string origin;  ///< names it in messages ("--record-view")
+};
+
 struct run_options {
   /// output folder; empty = ./stride-out/<system-name>-<YYYYmmdd-HHMMSS> (suffixed -2, -3 … if
   /// it exists)
@@ -47,6 +58,10 @@ struct run_options {
   std::vector<std::string> record_signals;
   /// ... and this interval (a multiple of the base step).
   std::optional<duration> record_interval;
+  /// Further recordings (not part of system.xml: a resumed run gets them from its options).
+  /// \throws validation_error when one matches no variable at all or names a file the run
+  /// writes anyway.
+  std::vector<extra_record> extra_records;
   /// Stop conditions, "comp.var" (or patterns with * and ?: the Boolean, Integer and Real
   /// outputs they match): the run ends at the first communication point at which one of these
   /// outputs is true or non-zero (execution::stop_when). \throws validation_error naming a
@@ -82,7 +97,8 @@ struct run_report {
   /// The system as run: overrides applied, replica groups expanded, placeholders substituted.
   system_structure system;
   std::filesystem::path output_dir;
-  std::filesystem::path results_file;  ///< empty if recording is disabled
+  std::filesystem::path results_file;              ///< empty if recording is disabled
+  std::vector<std::filesystem::path> extra_files;  ///< of run_options::extra_records, in order
   std::filesystem::path manifest_file;
   run_result result;
   /// from the start of initialization to the end of the simulation (components' termination

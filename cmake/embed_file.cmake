@@ -1,4 +1,5 @@
 # cmake -DINPUT=<file> -DOUTPUT=<file.cpp> -DSYMBOL=<name> -P embed_file.cmake
+# (the demo scenario, the run viewer's web assets)
 # Writes a C++ source that defines `std::string_view SYMBOL()` returning the file's bytes.
 file(READ "${INPUT}" hex HEX)
 string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
