@@ -20,6 +20,11 @@ target_compile_features(stride_sdk PUBLIC cxx_std_20)
 set_target_properties(stride_sdk PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON
                                             POSITION_INDEPENDENT_CODE ON EXPORT_NAME sdk)
 stride_set_warnings(stride_sdk)
+# a coverage build's SDK calls gcov's runtime: whatever links it, out of tree through the
+# installed package too, links that runtime
+if(STRIDE_COVERAGE)
+  target_link_options(stride_sdk INTERFACE --coverage)
+endif()
 add_library(stride::sdk ALIAS stride_sdk)
 add_library(Stride::sdk ALIAS stride_sdk)
 

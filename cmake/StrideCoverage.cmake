@@ -1,0 +1,20 @@
+# STRIDE_COVERAGE: the whole build (libraries, FMUs, tests, CLI) instrumented with gcov (GCC
+# --coverage), so that running the test suite leaves .gcda counters next to the objects; FMUs
+# unpacked elsewhere still write there, the object paths are absolute. scripts/coverage.sh
+# configures it, runs the suite and reports with gcovr.
+option(STRIDE_COVERAGE "Build with gcov instrumentation (GCC) for scripts/coverage.sh" OFF)
+set(STRIDE_COVERAGE_OPTIMIZATION "-O1" CACHE STRING
+    "Optimisation level of the coverage build (overrides the build type's)")
+if(STRIDE_COVERAGE)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "GNU" OR NOT CMAKE_C_COMPILER_ID STREQUAL "GNU")
+    message(FATAL_ERROR "STRIDE_COVERAGE needs GCC for C and C++ (gcov's data format)")
+  endif()
+  if(STRIDE_SANITIZE)
+    message(FATAL_ERROR "STRIDE_COVERAGE and STRIDE_SANITIZE exclude each other")
+  endif()
+  # target options come after the build type's flags, so this level wins over theirs; atomic
+  # counters, since components step on threads and racing increments corrupt gcov's arc counts
+  # (negative branch counts that gcovr refuses)
+  add_compile_options(${STRIDE_COVERAGE_OPTIMIZATION} -g --coverage -fprofile-update=atomic)
+  add_link_options(--coverage)
+endif()
