@@ -12,7 +12,7 @@ packages=(
   libcli11-dev cyclonedds-dev cyclonedds-tools libssl-dev iproute2
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3
-  clang libclang-rt-dev llvm
+  clang libclang-rt-dev llvm gcovr
   nodejs chromium
 )
 
