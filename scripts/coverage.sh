@@ -24,8 +24,15 @@ rm -rf "$out"
 mkdir -p "$out/html"
 # a failing test still leaves its counters: report them, then fail
 status=0
+# gcov's runtime reports counters it could not merge or write here, not on the tests' stderr
+export GCOV_ERROR_FILE="$out/gcov-errors.txt"
 (cd "$build" && ctest --output-on-failure -j "${STRIDE_JOBS:-2}" "$@") || status=$?
 tested=$SECONDS
+if [ -s "$GCOV_ERROR_FILE" ]; then
+  echo "coverage: gcov lost counters, the figures would be wrong ($GCOV_ERROR_FILE):" >&2
+  head -20 "$GCOV_ERROR_FILE" >&2
+  status=1
+fi
 
 # only the project's source folders count (not tests/, bench/, fuzz/, examples/, build trees or
 # system headers); the branches that only exceptions take, and those gcc marks unreachable, are
