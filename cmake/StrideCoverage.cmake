@@ -3,8 +3,12 @@
 # unpacked elsewhere still write there, the object paths are absolute. scripts/coverage.sh
 # configures it, runs the suite and reports with gcovr.
 option(STRIDE_COVERAGE "Build with gcov instrumentation (GCC) for scripts/coverage.sh" OFF)
-set(STRIDE_COVERAGE_OPTIMIZATION "-O1" CACHE STRING
-    "Optimisation level of the coverage build (overrides the build type's)")
+# -Og: the suite runs as fast as at -O1 (at -O0 five times slower) and it compiles faster than
+# -O1; it inlines less, so the counts stay closer to the source. -DSTRIDE_COVERAGE_OPTIMIZATION=
+# overrides it (to compare levels).
+if(NOT DEFINED STRIDE_COVERAGE_OPTIMIZATION)
+  set(STRIDE_COVERAGE_OPTIMIZATION -Og)
+endif()
 if(STRIDE_COVERAGE)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "GNU" OR NOT CMAKE_C_COMPILER_ID STREQUAL "GNU")
     message(FATAL_ERROR "STRIDE_COVERAGE needs GCC for C and C++ (gcov's data format)")
