@@ -42,7 +42,7 @@ fi
 # under a minute otherwise)
 cd "$root"
 timeout 900 gcovr --root "$root" "$build" -j "${STRIDE_JOBS:-2}" \
-  --filter '(common|fmi|orchestrator|components|remote|suite|study|calibration|cli)/' \
+  --filter '(common|fmi|orchestrator|components|remote|suite|study|calibration|viewer|cli)/' \
   --exclude-throw-branches --exclude-unreachable-branches \
   --json-summary-pretty --json-summary "$out/summary.json" --json "$out/coverage.json" \
   --html-details "$out/html/index.html" --html-title "Stride coverage"

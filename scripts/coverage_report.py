@@ -17,7 +17,7 @@ from collections import defaultdict
 
 # top-level source folders in the order of CONTRIBUTING.md; components/ also gets one row each
 FOLDERS = ["common", "fmi", "orchestrator", "components", "remote", "suite", "study",
-           "calibration", "cli"]
+           "calibration", "viewer", "cli"]
 
 
 def folder_rows(files):
