@@ -16,6 +16,7 @@
 #include "stride/study/suite_assertions.hpp"
 #include "stride/suite/assertions.hpp"
 #include "sweep.hpp"
+#include "robot_fmu.hpp"
 #include "view.hpp"
 #include "workers.hpp"
 
@@ -150,6 +151,9 @@ int main(int argc, char** argv) {
   stride::cli::view_arguments view_args;
   auto* view = stride::cli::add_view_command(app, view_args);
 
+  stride::cli::robot_fmu_arguments robot_fmu_args;
+  auto* robot_fmu = stride::cli::add_robot_fmu_command(app, robot_fmu_args);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -196,6 +200,7 @@ int main(int argc, char** argv) {
       return stride::cli::plot(plot_args, stride::study::plot_learner_runs);
     }
     if (*view) return stride::cli::view(view_args);
+    if (*robot_fmu) return stride::cli::robot_fmu(robot_fmu_args);
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;

@@ -5,7 +5,8 @@
 # OUTPUT_DIR, else STRIDE_FMU_OUTPUT_DIR, else `${CMAKE_BINARY_DIR}/fmus`:
 #  - the component sources (with STRIDE_FMU(model) in one of them) are compiled once, with hidden
 #    visibility, and linked both into the FMU's shared library and into a generator executable
-#    that writes modelDescription.xml at build time from the component's variable table;
+#    that writes modelDescription.xml at build time from the component's variable table (given
+#    the staged resources/ folder, for a component that reads its interface from there);
 #  - the shared library `binaries/linux64/<id>.so` exports only the fmi2* symbols (version
 #    script), carries libstdc++/libgcc statically and has RPATH=$ORIGIN;
 #  - with BUNDLE_DEPENDENCIES, every shared library it needs beyond the C runtime (libstdc++
@@ -99,8 +100,9 @@ function(stride_add_fmu name)
     OUTPUT "${archive}"
     COMMAND ${CMAKE_COMMAND} -E rm -rf "${staging}/resources"
     COMMAND ${CMAKE_COMMAND} -E make_directory "${staging}/resources" "${output_dir}"
-    COMMAND $<TARGET_FILE:${name}_model_description> "${staging}/modelDescription.xml"
     ${copy_resources}
+    COMMAND $<TARGET_FILE:${name}_model_description> "${staging}/modelDescription.xml"
+            "${staging}/resources"
     ${bundle}
     COMMAND ${CMAKE_COMMAND} -E rm -f "${archive}"
     COMMAND ${CMAKE_COMMAND} -E chdir "${staging}"

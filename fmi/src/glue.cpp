@@ -3,6 +3,9 @@
 // component's variable table or to its model. Nothing here knows any particular component.
 #include <cmath>
 #include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <exception>
 #include <string>
 #include <string_view>
@@ -18,19 +21,25 @@
 namespace stride::sdk::glue {
 namespace {
 
-const fmu_definition& definition() {
-  return detail::registered_fmu();
+// The definition of the FMU unpacked at `resource_dir` and its GUID, loaded once per folder (a
+// generated FMU reads its interface from there; a compiled one has a single definition).
+const loaded_fmu& definition_for(const std::string& resource_dir) {
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<const loaded_fmu>> loaded;
+  std::lock_guard lock(mutex);
+  auto& entry = loaded[resource_dir];
+  if (!entry) {
+    std::shared_ptr<const fmu_definition> fmu = detail::fmu_for(resource_dir);
+    std::string guid = compute_guid(*fmu);
+    entry = std::make_unique<const loaded_fmu>(loaded_fmu{std::move(fmu), std::move(guid)});
+  }
+  return *entry;
 }
 
-const std::string& guid() {
-  static const std::string value = compute_guid(definition());
-  return value;
-}
-
-std::vector<std::string> known_log_categories() {
+std::vector<std::string> known_log_categories(const fmu_definition& fmu) {
   std::vector<std::string> names = {"logStatusWarning", "logStatusError", "logStatusFatal",
                                     "logEvents", "logCalls"};
-  for (const auto& category : definition().info.log_categories) names.push_back(category.first);
+  for (const auto& category : fmu.info.log_categories) names.push_back(category.first);
   return names;
 }
 
@@ -213,7 +222,7 @@ struct state_header {
 std::vector<std::byte> serialize(instance& inst) {
   state_header header{};
   std::memcpy(header.magic, k_state_magic, sizeof header.magic);
-  std::strncpy(header.guid, guid().c_str(), sizeof header.guid - 1);
+  std::strncpy(header.guid, inst.loaded.guid.c_str(), sizeof header.guid - 1);
   header.time = inst.time;
   header.lifecycle = inst.state;
   header.terminate_requested = inst.terminate_requested ? 1 : 0;
@@ -225,14 +234,14 @@ std::vector<std::byte> serialize(instance& inst) {
 }
 
 // "" when the bytes are a state of this FMU, otherwise the reason.
-std::string state_problem(const std::byte* bytes, size_t size) {
+std::string state_problem(const instance& inst, const std::byte* bytes, size_t size) {
   if (bytes == nullptr || size < sizeof(state_header)) return "too short to be an FMU state";
   state_header header;
   std::memcpy(&header, bytes, sizeof header);
   if (std::memcmp(header.magic, k_state_magic, sizeof header.magic) != 0) {
     return "not a Stride FMU state";
   }
-  if (std::strncmp(header.guid, guid().c_str(), sizeof header.guid) != 0) {
+  if (std::strncmp(header.guid, inst.loaded.guid.c_str(), sizeof header.guid) != 0) {
     return "state belongs to another FMU (GUID " +
            std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
   }
@@ -275,9 +284,9 @@ fmi2Status unsupported(fmi2Component c, function f, const char* name, const char
 
 }  // namespace
 
-instance::instance(const fmu_definition& definition, std::string name, std::string resource_dir,
+instance::instance(const loaded_fmu& definition, std::string name, std::string resource_dir,
                    const fmi2CallbackFunctions& callbacks)
-    : fmu(definition), log(callbacks.logger, callbacks.componentEnvironment, name) {
+    : loaded(definition), fmu(*definition.fmu), log(callbacks.logger, callbacks.componentEnvironment, name) {
   context.instance_name = std::move(name);
   context.resource_dir = std::move(resource_dir);
   context.log = &log;
@@ -329,14 +338,15 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     early.error("fmi2Instantiate: only Co-Simulation is supported");
     return nullptr;
   }
-  if (fmuGUID == nullptr || guid() != fmuGUID) {
-    early.error(std::string("fmi2Instantiate: wrong GUID ") + (fmuGUID ? fmuGUID : "(null)") +
-                ", this binary is " + guid());
-    return nullptr;
-  }
   try {
-    auto inst = std::make_unique<instance>(definition(), name, path_from_uri(fmuResourceLocation),
-                                           *functions);
+    const std::string resource_dir = path_from_uri(fmuResourceLocation);
+    const loaded_fmu& fmu = definition_for(resource_dir);
+    if (fmuGUID == nullptr || fmu.guid != fmuGUID) {
+      early.error(std::string("fmi2Instantiate: wrong GUID ") + (fmuGUID ? fmuGUID : "(null)") +
+                  ", this binary is " + fmu.guid);
+      return nullptr;
+    }
+    auto inst = std::make_unique<instance>(fmu, name, resource_dir, *functions);
     inst->log.enable_all(loggingOn != fmi2False);
     inst->create_component();
     inst->log.info("logEvents", "instantiated (resources: " + inst->context.resource_dir + ")");
@@ -367,7 +377,7 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nC
     names.emplace_back(categories[i]);
   }
   const std::string unknown =
-      inst->log.set_debug_logging(loggingOn != fmi2False, names, known_log_categories());
+      inst->log.set_debug_logging(loggingOn != fmi2False, names, known_log_categories(inst->fmu));
   if (!unknown.empty()) {
     return fail(*inst, "fmi2SetDebugLogging: unknown log category '" + unknown + "'");
   }
@@ -582,7 +592,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
   if (inst == nullptr) return fmi2Error;
   if (FMUstate == nullptr) return fail(*inst, "fmi2DeSerializeFMUstate: null FMUstate pointer");
   const auto* bytes = reinterpret_cast<const std::byte*>(serializedState);
-  const std::string problem = state_problem(bytes, size);
+  const std::string problem = state_problem(*inst, bytes, size);
   if (!problem.empty()) return fail(*inst, "fmi2DeSerializeFMUstate: " + problem);
   auto* s = new saved_state;
   s->bytes.assign(bytes, bytes + size);

@@ -45,10 +45,17 @@ struct saved_state {
   std::vector<std::byte> bytes;
 };
 
+/// An FMU definition as the glue keeps it: loaded once, with its GUID.
+struct loaded_fmu {
+  std::shared_ptr<const fmu_definition> fmu;
+  std::string guid;
+};
+
 struct instance {
-  instance(const fmu_definition& definition, std::string name, std::string resource_dir,
+  instance(const loaded_fmu& definition, std::string name, std::string resource_dir,
            const fmi2CallbackFunctions& callbacks);
 
+  const loaded_fmu& loaded;
   const fmu_definition& fmu;
   fmi_logger log;
   instance_context context;

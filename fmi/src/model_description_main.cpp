@@ -1,5 +1,7 @@
 // Build-time generator: writes the modelDescription.xml of the component it is linked with.
-// Usage: <component>_model_description OUTPUT.xml
+// Usage: <component>_model_description OUTPUT.xml [RESOURCE_DIR]
+// RESOURCE_DIR: the resources/ folder of the FMU, for a component that reads its interface from
+// there (STRIDE_FMU_FROM_RESOURCES).
 // The generation time honours SOURCE_DATE_EPOCH for reproducible builds.
 #include <cstdio>
 #include <cstdlib>
@@ -11,8 +13,8 @@
 #include "stride/sdk/model_description.hpp"
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: " << argv[0] << " OUTPUT.xml\n";
+  if (argc != 2 && argc != 3) {
+    std::cerr << "usage: " << argv[0] << " OUTPUT.xml [RESOURCE_DIR]\n";
     return 2;
   }
   try {
@@ -21,8 +23,8 @@ int main(int argc, char** argv) {
       now = std::strtoll(epoch, nullptr, 10);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-    const std::string xml =
-        stride::sdk::write_model_description(stride::sdk::detail::registered_fmu(), stamp);
+    const auto fmu = stride::sdk::detail::fmu_for(argc == 3 ? argv[2] : "");
+    const std::string xml = stride::sdk::write_model_description(*fmu, stamp);
     std::ofstream out(argv[1], std::ios::binary);
     out << xml;
     if (!out) {

@@ -149,4 +149,11 @@ variable_table table_builder_base::finish(std::shared_ptr<const void> defaults,
   return variable_table(std::move(vars_), std::move(defaults), data_size);
 }
 
+variable_table buffer_table_builder::finish() {
+  auto bytes = std::make_shared<std::vector<std::byte>>(std::move(defaults_));
+  const std::size_t size = bytes->size();
+  const void* start = bytes->data();
+  return table_builder_base::finish(std::shared_ptr<const void>(std::move(bytes), start), size);
+}
+
 }  // namespace stride::sdk

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstring>
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -119,6 +120,41 @@ class model_base : public model {
 
  protected:
   Data data_{};
+};
+
+/// A model whose values live in a byte buffer laid out by buffer_table_builder (a component
+/// whose interface is read at run time); the buffer starts as the table's start values and is
+/// the whole state unless the model adds its own.
+class buffer_model : public model {
+ public:
+  explicit buffer_model(const variable_table& table)
+      : data_(static_cast<const std::byte*>(table.defaults()),
+              static_cast<const std::byte*>(table.defaults()) + table.data_size()) {}
+  void* data() override { return data_.data(); }
+
+  std::vector<std::byte> save_state() const override { return data_; }
+  void restore_state(std::span<const std::byte> bytes) override {
+    if (bytes.size() != data_.size()) {
+      throw model_error("FMU state has " + std::to_string(bytes.size()) + " bytes, expected " +
+                        std::to_string(data_.size()));
+    }
+    std::memcpy(data_.data(), bytes.data(), bytes.size());
+  }
+
+ protected:
+  /// The value of T at `offset` (as reserved with buffer_table_builder).
+  template <class T>
+  T& value(std::size_t offset) {
+    return *std::launder(reinterpret_cast<T*>(data_.data() + offset));
+  }
+  template <class T>
+  const T& value(std::size_t offset) const {
+    return *std::launder(reinterpret_cast<const T*>(data_.data() + offset));
+  }
+  std::size_t data_size() const { return data_.size(); }
+
+ private:
+  std::vector<std::byte> data_;
 };
 
 }  // namespace stride::sdk

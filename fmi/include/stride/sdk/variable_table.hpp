@@ -7,10 +7,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -197,6 +199,59 @@ class table_builder : public table_builder_base {
     }
   }
   std::shared_ptr<Data> defaults_;
+};
+
+/// Builds the table of a component whose interface is only known at run time (e.g. read from a
+/// file in its resources): each variable gets room in a byte buffer, in declaration order, and
+/// the component reads and writes its values there (buffer_model). Two declarations may share
+/// storage: `declare` names values that `reserve` set aside.
+class buffer_table_builder : public table_builder_base {
+ public:
+  /// Sets aside `count` values of T (double, int, bool or fixed_string<N>), each starting at
+  /// `start`; returns the offset of the first.
+  template <class T>
+  std::size_t reserve(std::size_t count, const T& start) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const std::size_t offset = (defaults_.size() + alignof(T) - 1) / alignof(T) * alignof(T);
+    defaults_.resize(offset + count * sizeof(T));
+    for (std::size_t i = 0; i < count; ++i) {
+      std::memcpy(defaults_.data() + offset + i * sizeof(T), &start, sizeof(T));
+    }
+    return offset;
+  }
+  /// Declares `name` over the value of T at `offset` (count 1), or `name[1]`..`name[count]`
+  /// over `count` consecutive values when `array`.
+  template <class T>
+  variable_group declare(std::string name, std::size_t offset, std::size_t count = 1,
+                         bool array = false) {
+    if (offset + count * sizeof(T) > defaults_.size()) {
+      throw std::logic_error("variable '" + name + "': storage not reserved");
+    }
+    std::size_t capacity = 0;
+    if constexpr (detail::storage_traits<T>::type == value_type::string) capacity = T::capacity();
+    return table_builder_base::add(std::move(name), detail::storage_traits<T>::type, offset, count,
+                                   sizeof(T), capacity, array || count != 1);
+  }
+  /// Changes the start value of the T at `offset`.
+  template <class T>
+  void set_start(std::size_t offset, const T& start) {
+    if (offset + sizeof(T) > defaults_.size()) throw std::logic_error("start value not reserved");
+    std::memcpy(defaults_.data() + offset, &start, sizeof(T));
+  }
+  /// reserve() and declare() in one: a scalar variable of its own.
+  template <class T>
+  variable_group add(std::string name, const T& start, std::size_t* offset = nullptr) {
+    const std::size_t at = reserve<T>(1, start);
+    if (offset != nullptr) *offset = at;
+    return declare<T>(std::move(name), at);
+  }
+
+  /// The start values as laid out so far.
+  std::span<const std::byte> defaults() const { return defaults_; }
+  variable_table finish();
+
+ private:
+  std::vector<std::byte> defaults_;
 };
 
 }  // namespace stride::sdk

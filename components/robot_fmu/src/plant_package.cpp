@@ -1,0 +1,229 @@
+// `stride robot-fmu`: stage resources/, generate modelDescription.xml from them with the same
+// code the FMU binary runs, and zip it all with the binaries of a built plant FMU.
+#include "stride/robot/plant_package.hpp"
+
+#include <zip.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "stride/robot/plant_fmu.hpp"
+#include "stride/robot/robot_model.hpp"
+#include "stride/sdk/model_description.hpp"
+
+namespace stride::robot {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error(p.string() + ": cannot read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write_file(const fs::path& p, const std::string& content) {
+  std::ofstream out(p, std::ios::binary);
+  out << content;
+  if (!out) throw std::runtime_error(p.string() + ": cannot write");
+}
+
+std::string utc_now() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = std::strtoll(epoch, nullptr, 10);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return stamp;
+}
+
+// a private staging folder, removed with everything in it
+class staging_dir {
+ public:
+  staging_dir() {
+    std::string pattern = (fs::temp_directory_path() / "stride-plant-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot create a temp folder");
+    path_ = pattern;
+  }
+  ~staging_dir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  staging_dir(const staging_dir&) = delete;
+  staging_dir& operator=(const staging_dir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// entries of an archive being written; libzip reads the buffers when it closes the archive
+class zip_writer {
+ public:
+  explicit zip_writer(const std::string& path) : path_(path) {
+    int error = 0;
+    archive_ = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    if (archive_ == nullptr) throw std::runtime_error(path + ": cannot create the archive");
+  }
+  ~zip_writer() {
+    if (archive_ != nullptr) zip_discard(archive_);
+  }
+  zip_writer(const zip_writer&) = delete;
+  zip_writer& operator=(const zip_writer&) = delete;
+
+  void add(const std::string& name, std::string content, bool executable = false) {
+    contents_.push_back(std::make_unique<std::string>(std::move(content)));
+    const std::string& data = *contents_.back();
+    zip_source_t* source = zip_source_buffer(archive_, data.data(), data.size(), 0);
+    const zip_int64_t index =
+        source ? zip_file_add(archive_, name.c_str(), source, ZIP_FL_OVERWRITE | ZIP_FL_ENC_UTF_8)
+               : -1;
+    if (index < 0) {
+      if (source) zip_source_free(source);
+      throw std::runtime_error(path_ + ": cannot add " + name + " (" + zip_strerror(archive_) + ")");
+    }
+    const auto i = static_cast<zip_uint64_t>(index);
+    // a fixed time and mode: the same inputs give the same archive
+    zip_file_set_mtime(archive_, i, 315532800, 0);  // 1980-01-01, the zip epoch
+    const zip_uint32_t mode = executable ? 0100755 : 0100644;
+    zip_file_set_external_attributes(archive_, i, 0, ZIP_OPSYS_UNIX, mode << 16);
+  }
+
+  void close() {
+    if (zip_close(archive_) != 0) {
+      const std::string why = zip_strerror(archive_);
+      throw std::runtime_error(path_ + ": cannot write the archive (" + why + ")");
+    }
+    archive_ = nullptr;
+  }
+
+ private:
+  std::string path_;
+  zip_t* archive_ = nullptr;
+  std::vector<std::unique_ptr<std::string>> contents_;
+};
+
+// binaries/<platform>/* of a built plant FMU, the model's library renamed to `identifier`
+std::vector<std::pair<std::string, std::string>> plant_binaries(const std::string& fmu,
+                                                                const std::string& identifier) {
+  int error = 0;
+  zip_t* archive = zip_open(fmu.c_str(), ZIP_RDONLY, &error);
+  if (archive == nullptr) {
+    throw std::runtime_error(fmu + ": cannot open the plant FMU whose binaries are packaged");
+  }
+  std::unique_ptr<zip_t, int (*)(zip_t*)> closer(archive, zip_close);
+  // the template's own identifier names its library
+  std::string own;
+  std::vector<std::pair<std::string, std::string>> files;
+  const zip_int64_t n = zip_get_num_entries(archive, 0);
+  for (zip_int64_t i = 0; i < n; ++i) {
+    const auto index = static_cast<zip_uint64_t>(i);
+    const std::string name = zip_get_name(archive, index, 0);
+    const bool binary = name.starts_with("binaries/") && name.back() != '/';
+    if (!binary && name != "modelDescription.xml") continue;
+    zip_stat_t st;
+    zip_stat_index(archive, index, 0, &st);
+    std::string content(static_cast<std::size_t>(st.size), '\0');
+    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> f(zip_fopen_index(archive, index, 0),
+                                                        zip_fclose);
+    if (!f || zip_fread(f.get(), content.data(), st.size) != static_cast<zip_int64_t>(st.size)) {
+      throw std::runtime_error(fmu + ": cannot read " + name);
+    }
+    if (name == "modelDescription.xml") {
+      const auto at = content.find("modelIdentifier=\"");
+      if (at != std::string::npos) {
+        own = content.substr(at + 17, content.find('"', at + 17) - (at + 17));
+      }
+      continue;
+    }
+    files.emplace_back(name, std::move(content));
+  }
+  std::sort(files.begin(), files.end());
+  if (own.empty() || files.empty()) {
+    throw std::runtime_error(fmu + ": not a plant FMU with binaries (no modelIdentifier or no "
+                                   "binaries/)");
+  }
+  for (auto& [name, content] : files) {
+    const fs::path p(name);
+    if (p.filename() == own + ".so" || p.filename() == own + ".dll" ||
+        p.filename() == own + ".dylib") {
+      name = (p.parent_path() / (identifier + p.extension().string())).string();
+    }
+  }
+  return files;
+}
+
+}  // namespace
+
+std::string model_identifier_from(const std::string& name) {
+  if (name.empty()) throw std::invalid_argument("an empty model name");
+  std::string id;
+  for (char c : name) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  if (std::isdigit(static_cast<unsigned char>(id[0]))) id = "_" + id;
+  return id;
+}
+
+plant_fmu_result write_plant_fmu(const plant_fmu_request& r) {
+  const fs::path urdf(r.urdf);
+  const fs::path output(r.output);
+  if (output.extension() != ".fmu") throw std::invalid_argument(r.output + ": must end in .fmu");
+  const std::string name = r.model_name.empty() ? output.stem().string() : r.model_name;
+  plant_manifest manifest;
+  manifest.model_name = name;
+  manifest.model_identifier = model_identifier_from(name);
+  manifest.description =
+      r.description.empty() ? name + " (" + urdf.filename().string() + ") on ODE" : r.description;
+  manifest.urdf = urdf.filename().string();
+
+  staging_dir staging;
+  const fs::path resources = staging.path() / "resources";
+  fs::create_directories(resources);
+  // the URDF must load where it is (its relative paths) before it is staged
+  (void)load_robot_model(r.urdf);
+  write_file(resources / manifest.urdf, read_file(urdf));
+  if (!r.profile.empty()) {
+    manifest.profile = fs::path(r.profile).filename().string();
+    if (manifest.profile == manifest.urdf || manifest.profile == k_plant_manifest) {
+      manifest.profile = "profile.xml";
+    }
+    write_file(resources / manifest.profile, read_file(r.profile));
+  }
+  write_file(resources / k_plant_manifest, write_plant_manifest(manifest));
+
+  plant_fmu_result result;
+  const auto fmu = load_plant_fmu(resources.string(), &result.warnings);
+  result.guid = sdk::compute_guid(*fmu);
+  result.variables = fmu->table.variables().size();
+  for (const sdk::variable& v : fmu->table.variables()) {
+    if (v.name.starts_with("joint_target[")) ++result.joints;
+  }
+  const std::string description = sdk::write_model_description(
+      *fmu, r.generation_time.empty() ? utc_now() : r.generation_time);
+
+  const auto binaries = plant_binaries(r.binaries_from, manifest.model_identifier);
+  if (!output.parent_path().empty()) fs::create_directories(output.parent_path());
+  const fs::path partial = output.string() + ".partial";
+  {
+    zip_writer zip(partial.string());
+    zip.add("modelDescription.xml", description);
+    for (const auto& [entry, content] : binaries) zip.add(entry, content, true);
+    std::vector<fs::path> staged;  // sorted: the same inputs give the same archive
+    for (const auto& f : fs::directory_iterator(resources)) staged.push_back(f.path());
+    std::sort(staged.begin(), staged.end());
+    for (const fs::path& f : staged) zip.add("resources/" + f.filename().string(), read_file(f));
+    zip.close();
+  }
+  fs::rename(partial, output);
+  return result;
+}
+
+}  // namespace stride::robot
