@@ -84,7 +84,8 @@ TEST(robot_sim, a_passive_pendulum_released_at_5_degrees_keeps_the_finite_amplit
     // the fixed-base body's pitch is the angle from the rest position (its frame is upright
     // when the bob hangs straight down; at the release it is turned +5° about y)
     const double now = sim.outputs().pitch;
-    amplitude = std::max(amplitude, std::abs(now));
+    // the amplitude of the last swing (one period is 1.42 s)
+    if (sim.outputs().time > 8.5) amplitude = std::max(amplitude, std::abs(now));
     if (!first && (last < 0.0) != (now < 0.0)) {
       crossings.push_back(sim.outputs().time - c.physics_step * now / (now - last));
     }
@@ -92,8 +93,9 @@ TEST(robot_sim, a_passive_pendulum_released_at_5_degrees_keeps_the_finite_amplit
     first = false;
   }
   ASSERT_GE(crossings.size(), 12u);
-  // no damping anywhere: the amplitude stays the release angle
-  EXPECT_NEAR(amplitude, theta0, 1e-3 * theta0);
+  // no damping anywhere: after 6 swings the amplitude is still the release angle (a damping of
+  // 5e-4 N·m·s/rad would take 0.9 % off it; measured: 3e-9 rad off)
+  EXPECT_NEAR(amplitude, theta0, 1e-4 * theta0);
   const double period =
       2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   // the band: ten times the step's error above, five times below the amplitude term (measured:
