@@ -75,7 +75,9 @@ double motor_effort(const ode_world& world, std::size_t j) {
     dJointGetSliderAxis(world.joints[j], axis);
     return vec(axis).dot(force);
   }
-  // fb.t1 is about the child's centre of mass; the anchor's force adds (anchor − com) × f there
+  // fb.t1 is about the child's centre of mass; the anchor's force adds (anchor − com) × f there.
+  // Anchor and axis are those after the step, the forces those of the step: for a turning joint
+  // they differ by its turn in one step, nothing at rest
   dVector3 anchor;
   dJointGetHingeAnchor(world.joints[j], anchor);
   dJointGetHingeAxis(world.joints[j], axis);
