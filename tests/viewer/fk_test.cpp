@@ -76,9 +76,9 @@ plant_frames run_plant() {
     f.yaw.push_back(o.yaw);
     for (std::size_t i = 0; i < o.joint_angles.size(); ++i) f.q[i].push_back(o.joint_angles[i]);
     // where the plant's bodies are: the ODE state (centre of mass, orientation) of each
-    const robot::plant_snapshot s =
-        robot::decode_state_image(sim.save_state(), welded.bodies.size(), welded.joints.size(),
-                                  static_cast<std::size_t>(sim.servo_count()), k_urdf);
+    const robot::plant_snapshot s = robot::decode_state_image(
+        sim.save_state(), welded.bodies.size(), welded.joints.size(),
+        static_cast<std::size_t>(sim.servo_count()), sim.config().contact_links.size(), k_urdf);
     std::map<std::string, Eigen::Vector3d> links;
     for (const robot::link_frame& l : welded.links) {
       if (l.body < 0) continue;

@@ -10,6 +10,23 @@ void require(bool ok, const std::string& key, const std::string& what) {
   if (!ok) throw std::invalid_argument("robot_config." + key + ": " + what);
 }
 
+namespace {
+
+// `key`: where the servo model sits in robot_config ("servo", "joint_servos[<joint>]")
+void check_servo(const servo_config& s, const std::string& key) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
+  auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+  require(non_negative(s.p_gain), key + ".p_gain", "must be >= 0");
+  require(positive(s.max_velocity), key + ".max_velocity", "must be > 0");
+  require(non_negative(s.max_acceleration), key + ".max_acceleration", "must be >= 0");
+  require(s.torque_limit >= 0.0, key + ".torque_limit", "must be >= 0 (infinity: unlimited)");
+  require(non_negative(s.damping), key + ".damping", "must be >= 0");
+  require(non_negative(s.compliance), key + ".compliance", "must be >= 0");
+  require(non_negative(s.static_friction), key + ".static_friction", "must be >= 0");
+}
+
+}  // namespace
+
 void check_config(const robot_config& c) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   auto non_negative = [](double v) { return std::isfinite(v) && v >= 0.0; };
@@ -27,13 +44,10 @@ void check_config(const robot_config& c) {
   require(non_negative(c.contact.soft_cfm), "contact.soft_cfm", "must be >= 0");
   require(c.contact.max_contacts > 0 && c.contact.max_contacts <= 64, "contact.max_contacts",
           "must be in 1..64");
-  require(non_negative(c.servo.p_gain), "servo.p_gain", "must be >= 0");
-  require(positive(c.servo.max_velocity), "servo.max_velocity", "must be > 0");
-  require(non_negative(c.servo.max_acceleration), "servo.max_acceleration", "must be >= 0");
-  require(c.servo.torque_limit >= 0.0, "servo.torque_limit", "must be >= 0 (infinity: unlimited)");
-  require(non_negative(c.servo.damping), "servo.damping", "must be >= 0");
-  require(non_negative(c.servo.compliance), "servo.compliance", "must be >= 0");
-  require(non_negative(c.servo.static_friction), "servo.static_friction", "must be >= 0");
+  check_servo(c.servo, "servo");
+  for (const auto& [joint, servo] : c.joint_servos) {
+    check_servo(servo, "joint_servos[" + joint + "]");
+  }
   require(positive(c.imu.gyro_range), "imu.gyro_range", "must be > 0");
   require(positive(c.imu.acc_range), "imu.acc_range", "must be > 0");
   require(non_negative(c.fall_tilt), "fall_tilt", "must be >= 0");

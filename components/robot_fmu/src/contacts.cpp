@@ -1,14 +1,17 @@
-// Collision of explicit geom pairs, contact joints with the configured surface, foot forces from
-// joint feedback.
+// Collision of explicit geom pairs, contact joints with the configured surface, floor forces on
+// chosen bodies from joint feedback.
 #include "contacts.hpp"
 
 #include <algorithm>
 
 namespace stride::robot {
 
-contacts::contacts(const ode_world& world, const contact_config& config, int left_foot_body,
-                   int right_foot_body)
-    : config_(config), left_foot_body_(left_foot_body), right_foot_body_(right_foot_body) {
+contacts::contacts(const ode_world& world, const contact_config& config,
+                   const std::vector<int>& force_bodies)
+    : config_(config), measured_(world.bodies.size(), 0) {
+  for (int b : force_bodies) {
+    if (b >= 0) measured_[static_cast<std::size_t>(b)] = 1;
+  }
   const std::vector<geom_entry>& geoms = world.geoms;
   auto connected = [&](int a, int b) {
     for (const model_joint& mj : world.model.joints) {
@@ -34,14 +37,14 @@ contacts::contacts(const ode_world& world, const contact_config& config, int lef
     }
   }
   buffer_.resize(static_cast<std::size_t>(config.max_contacts));
-  std::size_t foot_geoms = 0;
+  std::size_t measured_geoms = 0;
   for (const geom_entry& g : geoms) {
-    if (g.body >= 0 && (g.body == left_foot_body || g.body == right_foot_body)) ++foot_geoms;
+    if (g.body >= 0 && measured_[static_cast<std::size_t>(g.body)] != 0) ++measured_geoms;
   }
-  feedback_.resize(foot_geoms * static_cast<std::size_t>(config.max_contacts) * 2 + 1);
+  feedback_.resize(measured_geoms * static_cast<std::size_t>(config.max_contacts) * 2 + 1);
 }
 
-void contacts::add_contacts(ode_world& world, int n, dBodyID b1, dBodyID b2, int foot) {
+void contacts::add_contacts(ode_world& world, int n, dBodyID b1, dBodyID b2, int measured_body) {
   for (int k = 0; k < n; ++k) {
     dContact& c = buffer_[static_cast<std::size_t>(k)];
     c.surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
@@ -54,9 +57,9 @@ void contacts::add_contacts(ode_world& world, int n, dBodyID b1, dBodyID b2, int
     dJointID id = dJointCreateContact(world.world, world.contact_group, &c);
     dJointAttach(id, b1, b2);
     const std::size_t slot = feedback_owner_.size();
-    if (foot >= 0 && slot < feedback_.size()) {
+    if (measured_body >= 0 && slot < feedback_.size()) {
       dJointSetFeedback(id, &feedback_[slot]);
-      feedback_owner_.push_back({static_cast<int>(slot), foot});
+      feedback_owner_.push_back({static_cast<int>(slot), measured_body});
     }
   }
 }
@@ -72,8 +75,8 @@ double contacts::collide(ode_world& world) {
     for (int k = 0; k < n; ++k) {
       max_penetration = std::max(max_penetration, buffer_[static_cast<std::size_t>(k)].geom.depth);
     }
-    const int foot = g.body == left_foot_body_ ? 0 : (g.body == right_foot_body_ ? 1 : -1);
-    add_contacts(world, n, world.bodies[static_cast<std::size_t>(g.body)], nullptr, foot);
+    const int measured = measured_[static_cast<std::size_t>(g.body)] != 0 ? g.body : -1;
+    add_contacts(world, n, world.bodies[static_cast<std::size_t>(g.body)], nullptr, measured);
   }
   // robot pairs are collided only when their bounding boxes overlap
   auto overlap = [](dGeomID a, dGeomID b) {
@@ -104,14 +107,12 @@ double contacts::collide(ode_world& world) {
   return max_penetration;
 }
 
-std::pair<Eigen::Vector3d, Eigen::Vector3d> contacts::foot_forces() const {
-  Eigen::Vector3d left = Eigen::Vector3d::Zero();
-  Eigen::Vector3d right = Eigen::Vector3d::Zero();
-  for (const auto& [slot, foot] : feedback_owner_) {
-    const Eigen::Vector3d f = vec(feedback_[static_cast<std::size_t>(slot)].f1);
-    (foot == 0 ? left : right) += f;
+std::vector<Eigen::Vector3d> contacts::floor_forces() const {
+  std::vector<Eigen::Vector3d> forces(measured_.size(), Eigen::Vector3d::Zero());
+  for (const auto& [slot, body] : feedback_owner_) {
+    forces[static_cast<std::size_t>(body)] += vec(feedback_[static_cast<std::size_t>(slot)].f1);
   }
-  return {left, right};
+  return forces;
 }
 
 void contacts::clear(ode_world& world) {

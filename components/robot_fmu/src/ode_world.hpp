@@ -70,6 +70,8 @@ struct ode_world {
   /// Last quaternion given to dBodySetQuaternion, by body.
   std::vector<std::array<dReal, 4>> quat_set;
   std::vector<dJointID> joints;
+  /// Constraint forces of joints[j] in the last step (attached by set_up_joint_motors).
+  std::vector<dJointFeedback> feedback;
   /// Robot geoms in canonical order (body by body, shape by shape).
   std::vector<geom_entry> geoms;
   /// Collision shapes welded to the world (fixed-base models).

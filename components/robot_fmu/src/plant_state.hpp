@@ -30,6 +30,8 @@ struct plant_state {
   Eigen::Vector3d acc = Eigen::Vector3d::Zero();
   Eigen::Vector3d left_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d right_force = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> link_forces;  // by robot_config::contact_links entry
+  std::vector<double> joint_torques;         // by servo ID − 1
   double max_penetration = 0.0;
 };
 

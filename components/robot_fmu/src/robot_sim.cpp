@@ -6,7 +6,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 
 #include "config_check.hpp"
 #include "contacts.hpp"
@@ -14,6 +13,7 @@
 #include "ode_world.hpp"
 #include "plant_state.hpp"
 #include "sensors.hpp"
+#include "servo_joints.hpp"
 #include "servos.hpp"
 #include "stance.hpp"
 #include "state_image.hpp"
@@ -26,6 +26,8 @@ namespace {
 robot_model load_checked_model(const robot_config& c) {
   check_config(c);
   robot_model m = load_robot_model(c.urdf_path);
+  assign_servo_joints(m, c);
+  check_joint_servos(m, c);
   check_initial_pose(c, m.servo_count());
   return m;
 }
@@ -70,6 +72,15 @@ std::pair<foot_frame, foot_frame> find_feet(const robot_model& model, const robo
           foot_frame{r.body, to_eigen(r.in_body.rotation)}};
 }
 
+// the body of each robot_config::contact_links entry
+std::vector<int> find_contact_links(const robot_model& model, const robot_config& c) {
+  std::vector<int> bodies;
+  for (const std::string& name : c.contact_links) {
+    bodies.push_back(movable_link(model, c, "contact_links", name).body);
+  }
+  return bodies;
+}
+
 }  // namespace
 
 struct robot_sim::impl {
@@ -79,6 +90,8 @@ struct robot_sim::impl {
   int servo_n;  // of the model as loaded: welding a servo keeps its ID
   sensor_mounts sensors;
   std::pair<foot_frame, foot_frame> feet;  // left, right
+  std::vector<int> contact_bodies;         // by contact_links entry
+  std::vector<servo_config> servos;        // by model joint (after welding)
   ode_world world;
   contacts contact;
 
@@ -92,10 +105,19 @@ struct robot_sim::impl {
         servo_n(model.servo_count()),
         sensors(find_sensors(model, cfg, servo_n, weld_rigid_servos(model, cfg))),
         feet(find_feet(model, cfg)),
+        contact_bodies(find_contact_links(model, cfg)),
+        servos(servo_models(model, cfg)),
         world(model, cfg),
-        contact(world, cfg.contact, feet.first.body, feet.second.body) {
-    set_up_joint_motors(world, cfg.servo);
+        contact(world, cfg.contact, measured_bodies()) {
+    set_up_joint_motors(world, servos);
     reset();
+  }
+
+  // bodies whose floor force is reported: the feet, then the contact links
+  [[nodiscard]] std::vector<int> measured_bodies() const {
+    std::vector<int> b = {feet.first.body, feet.second.body};
+    b.insert(b.end(), contact_bodies.begin(), contact_bodies.end());
+    return b;
   }
 
   void reset() {
@@ -109,11 +131,13 @@ struct robot_sim::impl {
           cfg.initial_pose.empty() ? 0.0 : cfg.initial_pose[static_cast<std::size_t>(id - 1)];
       state.targets[static_cast<std::size_t>(id - 1)] = v;
       if (j >= 0) {
-        q[static_cast<std::size_t>(j)] =
-            clamp_target(cfg.servo, model.joints[static_cast<std::size_t>(j)], v);
+        q[static_cast<std::size_t>(j)] = clamp_target(servos[static_cast<std::size_t>(j)],
+                                                      model.joints[static_cast<std::size_t>(j)], v);
       }
     }
     state.servo_velocity.assign(model.joints.size(), 0.0);
+    state.joint_torques.assign(static_cast<std::size_t>(servo_n), 0.0);
+    state.link_forces.assign(contact_bodies.size(), Eigen::Vector3d::Zero());
 
     pose root;
     if (!model.fixed_base) {
@@ -129,7 +153,7 @@ struct robot_sim::impl {
   void physics_step() {
     const double dt = cfg.physics_step;
     const Eigen::Vector3d v_before = imu_velocity(world, sensors);
-    drive_joints(world, cfg.servo, dt, state.targets, state.servo_velocity);
+    drive_joints(world, servos, dt, state.targets, state.servo_velocity);
     if (state.push_x != 0.0 || state.push_y != 0.0) {
       dBodyAddForce(world.bodies[0], state.push_x, state.push_y, 0.0);
     }
@@ -139,7 +163,7 @@ struct robot_sim::impl {
     } else {
       dWorldQuickStep(world.world, dt);
     }
-    std::tie(state.left_force, state.right_force) = contact.foot_forces();
+    read_step_forces();
     contact.clear(world);
     world.renormalize();
     ++state.steps;
@@ -165,6 +189,23 @@ struct robot_sim::impl {
     }
   }
 
+  // the forces of the physics step just taken, kept in the state (ODE's feedback is not)
+  void read_step_forces() {
+    const std::vector<Eigen::Vector3d> floor = contact.floor_forces();
+    auto floor_force = [&](int body) {
+      return body >= 0 ? floor[static_cast<std::size_t>(body)] : Eigen::Vector3d::Zero();
+    };
+    state.left_force = floor_force(feet.first.body);
+    state.right_force = floor_force(feet.second.body);
+    for (std::size_t k = 0; k < contact_bodies.size(); ++k) {
+      state.link_forces[k] = floor_force(contact_bodies[k]);
+    }
+    for (std::size_t i = 0; i < sensors.joint_of_servo.size(); ++i) {
+      const int j = sensors.joint_of_servo[i];
+      state.joint_torques[i] = j >= 0 ? motor_effort(world, static_cast<std::size_t>(j)) : 0.0;
+    }
+  }
+
   void step(double h) {
     if (!std::isfinite(h) || h < 0.0) {
       throw std::invalid_argument("robot_sim::step: h must be finite and >= 0, got " +
@@ -184,8 +225,9 @@ struct robot_sim::impl {
   }
 
   void restore(std::span<const std::uint8_t> image) {
-    plant_snapshot s = decode_state_image(image, world.bodies.size(), model.joints.size(),
-                                          static_cast<std::size_t>(servo_n), cfg.urdf_path);
+    plant_snapshot s =
+        decode_state_image(image, world.bodies.size(), model.joints.size(),
+                           static_cast<std::size_t>(servo_n), contact_bodies.size(), cfg.urdf_path);
     ensure_thread_data();
     world.set_body_states(s.bodies);
     state = std::move(s.plant);

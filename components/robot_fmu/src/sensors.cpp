@@ -65,6 +65,12 @@ void read_sensors(const ode_world& world, const sensor_mounts& m, const imu_conf
   o.com = {c.x(), c.y(), c.z()};
   o.left_foot_force = {state.left_force.x(), state.left_force.y(), state.left_force.z()};
   o.right_foot_force = {state.right_force.x(), state.right_force.y(), state.right_force.z()};
+  o.link_forces.resize(state.link_forces.size());
+  for (std::size_t k = 0; k < state.link_forces.size(); ++k) {
+    const Eigen::Vector3d& f = state.link_forces[k];
+    o.link_forces[k] = {f.x(), f.y(), f.z()};
+  }
+  o.joint_torques = state.joint_torques;
   o.max_penetration = state.max_penetration;
   o.fallen = state.fallen;
 }

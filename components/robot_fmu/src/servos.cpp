@@ -27,9 +27,13 @@ double clamp_target(const servo_config& c, const model_joint& j, double target) 
   return target;
 }
 
-void set_up_joint_motors(ode_world& world, const servo_config& c) {
+void set_up_joint_motors(ode_world& world, const std::vector<servo_config>& servos) {
+  // sized once: ODE keeps pointers into it
+  world.feedback.assign(world.joints.size(), dJointFeedback{});
   for (std::size_t j = 0; j < world.joints.size(); ++j) {
+    dJointSetFeedback(world.joints[j], &world.feedback[j]);
     const model_joint& mj = world.model.joints[j];
+    const servo_config& c = servos[j];
     // passive joints: Coulomb friction through a zero-velocity motor
     if (mj.servo_id == 0) {
       world.set_motor(j, 0.0, mj.friction);
@@ -44,10 +48,11 @@ void set_up_joint_motors(ode_world& world, const servo_config& c) {
   }
 }
 
-void drive_joints(ode_world& world, const servo_config& c, double dt,
+void drive_joints(ode_world& world, const std::vector<servo_config>& servos, double dt,
                   const std::vector<double>& targets, std::vector<double>& servo_velocity) {
   for (std::size_t j = 0; j < world.joints.size(); ++j) {
     const model_joint& mj = world.model.joints[j];
+    const servo_config& c = servos[j];
     const double rate = world.joint_rate(j);
     if (mj.servo_id > 0) {
       const double target = clamp_target(c, mj, targets[static_cast<std::size_t>(mj.servo_id - 1)]);
@@ -60,6 +65,25 @@ void drive_joints(ode_world& world, const servo_config& c, double dt,
       world.add_joint_effort(j, -mj.damping * rate);
     }
   }
+}
+
+double motor_effort(const ode_world& world, std::size_t j) {
+  const dJointFeedback& fb = world.feedback[j];
+  const Eigen::Vector3d force = vec(fb.f1);
+  dVector3 axis;
+  if (world.model.joints[j].type == joint_type::prismatic) {
+    dJointGetSliderAxis(world.joints[j], axis);
+    return vec(axis).dot(force);
+  }
+  // fb.t1 is about the child's centre of mass; the anchor's force adds (anchor − com) × f there.
+  // Anchor and axis are those after the step, the forces those of the step: for a turning joint
+  // they differ by its turn in one step, nothing at rest
+  dVector3 anchor;
+  dJointGetHingeAnchor(world.joints[j], anchor);
+  dJointGetHingeAxis(world.joints[j], axis);
+  const Eigen::Vector3d arm =
+      vec(anchor) - vec(dBodyGetPosition(dJointGetBody(world.joints[j], 0)));
+  return vec(axis).dot(vec(fb.t1) - arm.cross(force));
 }
 
 }  // namespace stride::robot

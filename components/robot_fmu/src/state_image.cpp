@@ -1,8 +1,9 @@
-// State image format, version 1 (all numbers in the machine's byte order):
-//   "STRIDERB", u32 version, u32 bodies, u32 joints, u32 servos,
+// State image format, version 2 (all numbers in the machine's byte order):
+//   "STRIDERB", u32 version, u32 bodies, u32 joints, u32 servos, u32 contact links,
 //   per body f64 position[3], quaternion[4], linear_velocity[3], angular_velocity[3],
 //   f64 time, f64 requested_time, i64 steps, f64 targets[servos], f64 servo_velocity[joints],
-//   f64 push_x, push_y, u32 fallen, f64 acc[3], left_force[3], right_force[3], max_penetration
+//   f64 push_x, push_y, u32 fallen, f64 acc[3], left_force[3], right_force[3], max_penetration,
+//   f64 link_forces[contact links][3], f64 joint_torques[servos]
 #include "state_image.hpp"
 
 #include <cstring>
@@ -15,7 +16,7 @@ namespace stride::robot {
 namespace {
 
 constexpr char k_state_magic[8] = {'S', 'T', 'R', 'I', 'D', 'E', 'R', 'B'};
-constexpr std::uint32_t k_state_version = 1;
+constexpr std::uint32_t k_state_version = 2;
 
 using reader = common::byte_reader<std::invalid_argument>;
 
@@ -39,6 +40,7 @@ std::vector<std::uint8_t> encode_state_image(const plant_snapshot& s) {
   w.put(static_cast<std::uint32_t>(s.bodies.size()));
   w.put(static_cast<std::uint32_t>(p.servo_velocity.size()));
   w.put(static_cast<std::uint32_t>(p.targets.size()));
+  w.put(static_cast<std::uint32_t>(p.link_forces.size()));
   for (const body_state& b : s.bodies) {
     put_all(w, b.position);
     put_all(w, b.quaternion);
@@ -57,13 +59,15 @@ std::vector<std::uint8_t> encode_state_image(const plant_snapshot& s) {
   put_all(w, p.left_force);
   put_all(w, p.right_force);
   w.put(p.max_penetration);
+  for (const Eigen::Vector3d& f : p.link_forces) put_all(w, f);
+  put_all(w, p.joint_torques);
   const auto& bytes = w.bytes();
   const auto* first = reinterpret_cast<const std::uint8_t*>(bytes.data());
   return {first, first + bytes.size()};
 }
 
 plant_snapshot decode_state_image(std::span<const std::uint8_t> image, std::size_t bodies,
-                                  std::size_t joints, std::size_t servos,
+                                  std::size_t joints, std::size_t servos, std::size_t contact_links,
                                   const std::string& source) {
   reader r(std::as_bytes(image), "robot state image is truncated");
   char magic[sizeof k_state_magic];
@@ -74,7 +78,7 @@ plant_snapshot decode_state_image(std::span<const std::uint8_t> image, std::size
   if (r.get<std::uint32_t>() != k_state_version)
     throw std::invalid_argument("robot state image: wrong version");
   if (r.get<std::uint32_t>() != bodies || r.get<std::uint32_t>() != joints ||
-      r.get<std::uint32_t>() != servos) {
+      r.get<std::uint32_t>() != servos || r.get<std::uint32_t>() != contact_links) {
     throw std::invalid_argument("robot state image: saved from a different model than " + source);
   }
   plant_snapshot s;
@@ -100,6 +104,10 @@ plant_snapshot decode_state_image(std::span<const std::uint8_t> image, std::size
   get_all(r, p.left_force);
   get_all(r, p.right_force);
   p.max_penetration = r.get<double>();
+  p.link_forces.resize(contact_links);
+  for (Eigen::Vector3d& f : p.link_forces) get_all(r, f);
+  p.joint_torques.resize(servos);
+  get_all(r, p.joint_torques);
   if (!r.at_end()) throw std::invalid_argument("robot state image: trailing bytes");
   return s;
 }

@@ -17,15 +17,15 @@ struct plant_snapshot {
   plant_state plant;
 };
 
-/// Image of `s`; its layout counts are s.bodies, s.plant.servo_velocity (one per joint) and
-/// s.plant.targets (one per servo).
+/// Image of `s`; its layout counts are s.bodies, s.plant.servo_velocity (one per joint),
+/// s.plant.targets and s.plant.joint_torques (one per servo) and s.plant.link_forces.
 std::vector<std::uint8_t> encode_state_image(const plant_snapshot& s);
 
-/// Reads an image of a plant with this many bodies, joints and servos. Throws
+/// Reads an image of a plant with this many bodies, joints, servos and contact links. Throws
 /// std::invalid_argument for an image that is not a plant state, of another version, of another
 /// layout (the message names `source`, the plant's model), truncated or with trailing bytes.
 plant_snapshot decode_state_image(std::span<const std::uint8_t> image, std::size_t bodies,
-                                  std::size_t joints, std::size_t servos,
+                                  std::size_t joints, std::size_t servos, std::size_t contact_links,
                                   const std::string& source);
 
 }  // namespace stride::robot

@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "oracle.hpp"
+#include "quadruped.hpp"
 #include "stride/robot/darwin.hpp"
 #include "stride/robot/robot_sim.hpp"
 
@@ -181,6 +183,65 @@ TEST(contacts, a_steady_sideways_push_is_held_by_floor_friction_in_world_axes) {
   EXPECT_NEAR(f.fx, 0.0, 0.05);
   // and the push's moment about the floor shifts load onto the left foot
   EXPECT_GT(f.left, f.right);
+}
+
+TEST(contacts, the_four_feet_of_a_standing_quadruped_carry_its_weight) {
+  robot_sim sim(stride::test::quadruped_config());
+  sim.step(2.0);
+  ASSERT_EQ(sim.outputs().link_forces.size(), 4u);
+  // averaged over a second at rest: the body does not accelerate, so the floor carries the
+  // weight, all of it through the feet (the body box is clear of the floor)
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  std::array<double, 4> each{0.0, 0.0, 0.0, 0.0};
+  const int n = 125;
+  for (int k = 0; k < n; ++k) {
+    sim.step(sim.config().physics_step);
+    for (std::size_t f = 0; f < 4; ++f) {
+      for (std::size_t a = 0; a < 3; ++a) sum[a] += sim.outputs().link_forces[f][a] / n;
+      each[f] += sim.outputs().link_forces[f][2] / n;
+    }
+  }
+  const double weight = stride::test::k_quadruped_mass * stride::test::k_gravity;
+  // measured: exact to 1e-6
+  EXPECT_NEAR(sum[2], weight, 0.001 * weight);
+  EXPECT_LT(std::hypot(sum[0], sum[1]), 0.001 * weight);
+  // statics by hand: each foot is under its hip (x = ±0.15 m); each leg's thigh and shin
+  // (0.5 kg) sit 0.15·sin(0.5)/2 behind it, so the centre of mass is 4·0.5·0.03596/6.2 =
+  // 11.6 mm behind the body centre and the hind feet carry more; left and right mirror each
+  // other. The band covers the feet's rolling contact points and the settled tilt (measured
+  // 0.004 N off)
+  const double x_com = -4.0 * 0.5 * 0.5 * 0.15 * std::sin(0.5) / stride::test::k_quadruped_mass;
+  const double front = 0.5 * weight * (0.15 + x_com) / 0.3;
+  const double hind = 0.5 * weight * (0.15 - x_com) / 0.3;
+  EXPECT_NEAR(each[0], front, 0.001 * weight);  // fl
+  EXPECT_NEAR(each[1], front, 0.001 * weight);  // fr
+  EXPECT_NEAR(each[2], hind, 0.001 * weight);   // hl
+  EXPECT_NEAR(each[3], hind, 0.001 * weight);   // hr
+}
+
+TEST(contacts, contact_links_report_floor_forces_in_their_order_and_bad_names_are_named) {
+  // DARwIn standing: contact links naming the feet (in reverse) and a link in the air
+  robot_config c = darwin::default_config(k_darwin);
+  c.contact_links = {c.right_foot_link, "head_tilt_link", c.left_foot_link};
+  robot_sim sim(c);
+  sim.step(1.0);
+  const foot_loads f = average_loads(sim, 0.2);
+  const auto& o = sim.outputs();
+  ASSERT_EQ(o.link_forces.size(), 3u);
+  EXPECT_EQ(o.link_forces[1], (std::array<double, 3>{0.0, 0.0, 0.0}));
+  EXPECT_GT(f.left, 0.3 * urdf_weight());
+  EXPECT_EQ(o.link_forces[0], o.right_foot_force);
+  EXPECT_EQ(o.link_forces[2], o.left_foot_force);
+
+  c.contact_links = {"no_such_link"};
+  try {
+    robot_sim bad(c);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("robot_config.contact_links: link 'no_such_link'"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "quadruped.hpp"
 #include "stride/robot/robot_sim.hpp"
 
 namespace {
@@ -56,6 +57,69 @@ TEST(robot_sim, pendulum_swings_with_the_compound_pendulum_period) {
       2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   EXPECT_NEAR(period, expected, 0.005 * expected);
   EXPECT_FALSE(sim.outputs().fallen);  // fixed-base models never fall
+}
+
+TEST(robot_sim, a_passive_pendulum_released_at_5_degrees_keeps_the_finite_amplitude_period) {
+  // tilted_pendulum.urdf by hand: 1 kg solid sphere (r = 0.05 m) 0.5 m below a passive pivot
+  // without damping or friction, released from rest 5° from its rest position (q = −5°)
+  const double m = 1.0, d = 0.5, g = 9.81, theta0 = 5.0 * std::numbers::pi / 180.0;
+  const double i_pivot = 0.4 * m * 0.05 * 0.05 + m * d * d;
+  const double t0 = 2.0 * std::numbers::pi * std::sqrt(i_pivot / (m * g * d));
+  // finite amplitude: T = T0·(1 + θ0²/16 + 11·θ0⁴/3072 + …), here +0.048 %
+  const double expected = t0 * (1.0 + theta0 * theta0 / 16.0 + 11.0 * std::pow(theta0, 4) / 3072.0);
+
+  robot_config c = config_for("tilted_pendulum.urdf");
+  // ODE's semi-implicit step errs in the period by about (ω·h)²/24 (ω = 4.4 rad/s): 1e-6 at
+  // h = 1 ms, far below the amplitude term this test resolves (8 ms would leave 5e-5)
+  c.physics_step = 0.001;
+  robot_sim sim(c);
+  ASSERT_EQ(sim.servo_count(), 0);  // no servo tags: the pivot is passive
+  ASSERT_NEAR(sim.outputs().pitch, theta0, 1e-9);
+  std::vector<double> crossings;
+  double last = 0.0;
+  double amplitude = 0.0;
+  bool first = true;
+  while (sim.outputs().time < 10.0) {
+    sim.step(c.physics_step);
+    // the fixed-base body's pitch is the angle from the rest position (its frame is upright
+    // when the bob hangs straight down; at the release it is turned +5° about y)
+    const double now = sim.outputs().pitch;
+    // the amplitude of the last swing (one period is 1.42 s)
+    if (sim.outputs().time > 8.5) amplitude = std::max(amplitude, std::abs(now));
+    if (!first && (last < 0.0) != (now < 0.0)) {
+      crossings.push_back(sim.outputs().time - c.physics_step * now / (now - last));
+    }
+    last = now;
+    first = false;
+  }
+  ASSERT_GE(crossings.size(), 12u);
+  // no damping anywhere: after 6 swings the amplitude is still the release angle (a damping of
+  // 5e-4 N·m·s/rad would take 0.9 % off it; measured: 3e-9 rad off)
+  EXPECT_NEAR(amplitude, theta0, 1e-4 * theta0);
+  const double period =
+      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  // the band: ten times the step's error above, five times below the amplitude term (measured:
+  // 1e-7 off)
+  EXPECT_NEAR(period, expected, 1e-5 * expected);
+}
+
+TEST(robot_sim, a_quadruped_driven_by_joint_name_stands_on_bent_knees) {
+  robot_sim sim(stride::test::quadruped_config());
+  ASSERT_EQ(sim.servo_count(), 8);
+  sim.step(2.0);
+  const double height_2s = sim.outputs().base_position[2];
+  sim.step(3.0);
+  const auto& o = sim.outputs();
+  EXPECT_FALSE(o.fallen);
+  // by hand: hip 0.04 m below the body origin, foot 2·0.15·cos(0.5) = 0.263 m below the hip,
+  // capsule radius 0.02 m: 0.323 m. The velocity servos hold their targets exactly at rest; what
+  // is left is the soft contacts' penetration (measured 0.3 mm)
+  EXPECT_NEAR(o.base_position[2], 0.04 + 0.3 * std::cos(0.5) + 0.02, 0.001);
+  EXPECT_NEAR(o.base_position[2], height_2s, 0.002);
+  EXPECT_LT(std::abs(o.roll), 0.02);
+  EXPECT_LT(std::abs(o.pitch), 0.02);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(o.joint_angles[k], 0.5, 1e-3) << k;
+  for (int k = 4; k < 8; ++k) EXPECT_NEAR(o.joint_angles[k], -1.0, 1e-3) << k;
 }
 
 TEST(robot_sim, positive_joint_positions_follow_the_urdf_axis) {

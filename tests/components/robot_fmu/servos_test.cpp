@@ -111,4 +111,45 @@ TEST(servos, servo_holds_within_its_torque_limit_and_sags_beyond_it) {
   EXPECT_NEAR(b.outputs().joint_angles[0], expected, 0.03);
 }
 
+TEST(servos, joint_torques_report_what_the_motor_holds_against_gravity) {
+  // arm.urdf by hand: the shoulder (axis −y, +q lifts) holds the 1 kg upper arm (CoM 0.5 m out)
+  // and the 10 g hand (0.5 m out): at rest level it must supply +m·g·r = 1.01·9.81·0.5 N·m, and
+  // nothing else acts about the axis (damping ∝ ω = 0, the stops are far away)
+  robot_config c;
+  c.urdf_path = k_data + "/arm.urdf";
+  c.servo.torque_limit = 10.0;
+  robot_sim sim(c);
+  sim.step(3.0);
+  ASSERT_NEAR(sim.outputs().joint_velocities[0], 0.0, 1e-6);
+  const double holding = 1.01 * 9.81 * 0.5;
+  // at rest the motor row carries the whole static torque (measured: exact to 1e-9)
+  EXPECT_NEAR(sim.outputs().joint_torques[0], holding, 1e-6 * holding);
+  EXPECT_EQ(sim.outputs().joint_torques[1], 0.0);  // no servo 2 in this model
+  // the wrist slider (axis along the arm, level) carries no weight along its axis (measured:
+  // 5e-7 N, from the arm's sag)
+  EXPECT_NEAR(sim.outputs().joint_torques[2], 0.0, 1e-5);
+
+  // arm raised vertical (q = π/2): no gravity torque at the shoulder; the wrist slider, now
+  // pointing up, holds the 10 g hand with +m·g = 0.0981 N
+  const std::vector<double> up = {std::acos(-1.0) / 2.0, 0.0, 0.05};
+  sim.set_joint_targets(up);
+  sim.step(3.0);
+  EXPECT_NEAR(sim.outputs().joint_torques[0], 0.0, 1e-6 * holding);
+  EXPECT_NEAR(sim.outputs().joint_torques[2], 0.01 * 9.81, 1e-6 * 0.0981);
+}
+
+TEST(servos, a_welded_servo_reports_no_torque) {
+  // the welded wrist (rigid_servos) has no joint and reads 0; its hand is then part of the upper
+  // arm, so the shoulder holds the same 1.01 kg at 0.5 m
+  robot_config c;
+  c.urdf_path = k_data + "/arm.urdf";
+  c.servo.torque_limit = 10.0;
+  c.rigid_servos = {3};
+  robot_sim sim(c);
+  sim.step(3.0);
+  EXPECT_EQ(sim.outputs().joint_torques[2], 0.0);
+  const double holding = 1.01 * 9.81 * 0.5;
+  EXPECT_NEAR(sim.outputs().joint_torques[0], holding, 1e-6 * holding);
+}
+
 }  // namespace

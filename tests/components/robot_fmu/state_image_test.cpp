@@ -62,6 +62,27 @@ TEST(state_image, an_image_round_trips_bit_exactly) {
   EXPECT_EQ(b.save_state(), a.save_state());
 }
 
+TEST(state_image, joint_torques_and_link_forces_round_trip) {
+  robot_config c = darwin::default_config(k_darwin);
+  c.contact_links = {c.left_foot_link, c.right_foot_link};
+  robot_sim a(c);
+  move(a, 60);
+  robot_sim b(c);
+  b.restore_state(a.save_state());
+  // both non-trivial, so that the comparison means something
+  ASSERT_NE(a.outputs().joint_torques[10], 0.0);
+  ASSERT_NE(a.outputs().link_forces[0][2], 0.0);
+  EXPECT_EQ(b.outputs().joint_torques, a.outputs().joint_torques);
+  EXPECT_EQ(b.outputs().link_forces, a.outputs().link_forces);
+  move(a, 20);
+  move(b, 20);
+  EXPECT_EQ(b.outputs().joint_torques, a.outputs().joint_torques);
+  EXPECT_EQ(b.outputs().link_forces, a.outputs().link_forces);
+  // an image without the contact links is of another layout
+  robot_sim plain(darwin::default_config(k_darwin));
+  EXPECT_THAT(rejection(plain, a.save_state()), HasSubstr("saved from a different model"));
+}
+
 TEST(state_image, a_damaged_image_is_rejected_and_the_plant_is_untouched) {
   robot_sim sim(darwin::default_config(k_darwin));
   move(sim, 20);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stride::robot {
@@ -77,8 +78,17 @@ struct robot_config {
   double erp = 0.2;
   double cfm = 1e-5;
   contact_config contact;
+  /// Servo model of every servo not named in joint_servos.
   servo_config servo;
   imu_config imu;
+
+  /// Servos by URDF joint name: servo ID i + 1 drives joint servo_joints[i]; every movable joint
+  /// not listed is passive and the URDF's own <servo id="N"/> tags are ignored. Names must be
+  /// movable joints of the URDF, each listed once. Empty = servos from the URDF's <servo> tags.
+  std::vector<std::string> servo_joints;
+  /// Servo model of named servo joints instead of `servo` (a later entry for the same joint
+  /// wins). Names must be servo-driven joints of the URDF.
+  std::vector<std::pair<std::string, servo_config>> joint_servos;
 
   /// Joint targets after reset(), rad (m for prismatic), indexed by servo ID − 1; empty = all 0.
   std::vector<double> initial_pose;
@@ -96,6 +106,9 @@ struct robot_config {
   /// Empty = not reported, base placed upright.
   std::string left_foot_link;
   std::string right_foot_link;
+  /// Links whose floor force is reported in robot_outputs::link_forces, in this order. A link's
+  /// force is that of the rigid body it belongs to (the link and everything welded to it).
+  std::vector<std::string> contact_links;
 
   /// `fallen` latches when the root link's z axis tilts more than this from vertical, rad ...
   double fall_tilt = 0.8;

@@ -21,6 +21,11 @@ struct robot_outputs {
   /// Joint positions by servo ID − 1, rad (m for prismatic); IDs without a joint read 0.
   std::vector<double> joint_angles;
   std::vector<double> joint_velocities;
+  /// Torque the joint's motor applied to the joint's child body about the joint axis in the last
+  /// physics step, by servo ID − 1, N·m (N along the axis for prismatic); positive drives the
+  /// joint position up. Includes the joint-limit stops' reaction, not servo_config::damping.
+  /// IDs without a joint and welded servos (rigid_servos) read 0.
+  std::vector<double> joint_torques;
   /// Angular velocity of the IMU link in its own frame (x forward, y left, z up), rad/s,
   /// saturated at imu_config::gyro_range (darwin::board_gyro converts it to CM-730 counts).
   std::array<double, 3> gyro{0.0, 0.0, 0.0};
@@ -39,6 +44,8 @@ struct robot_outputs {
   /// (z = normal force).
   std::array<double, 3> left_foot_force{0.0, 0.0, 0.0};
   std::array<double, 3> right_foot_force{0.0, 0.0, 0.0};
+  /// Total floor force on each of robot_config::contact_links (same order), world axes, N.
+  std::vector<std::array<double, 3>> link_forces;
   /// Deepest floor penetration of any collision shape in the last physics step, m.
   double max_penetration = 0.0;
   /// Latched until reset(): tilt beyond fall_tilt or root link below fall_height (is_fallen).
