@@ -34,6 +34,7 @@ void check_config(const robot_config& c) {
   require(non_negative(c.servo.damping), "servo.damping", "must be >= 0");
   require(non_negative(c.servo.compliance), "servo.compliance", "must be >= 0");
   require(non_negative(c.servo.static_friction), "servo.static_friction", "must be >= 0");
+  require(positive(c.mimic_force_limit), "mimic_force_limit", "must be > 0");
   require(positive(c.imu.gyro_range), "imu.gyro_range", "must be > 0");
   require(positive(c.imu.acc_range), "imu.acc_range", "must be > 0");
   require(non_negative(c.fall_tilt), "fall_tilt", "must be >= 0");
