@@ -86,7 +86,13 @@ dGeomID ode_world::make_geom(const collision_shape& s) {
       dGeomTriMeshDataBuildDouble(data, m.vertices.data(), 3 * sizeof(double),
                                   static_cast<int>(m.vertices.size() / 3), m.indices.data(),
                                   static_cast<int>(m.indices.size()), 3 * sizeof(std::uint32_t));
-      return dCreateTriMesh(nullptr, data, nullptr, nullptr, nullptr);
+      dGeomID g = dCreateTriMesh(nullptr, data, nullptr, nullptr, nullptr);
+      // temporal coherence would carry collision caches from step to step, which a state image
+      // does not hold: contacts come from the current poses only
+      for (int geom_class : {dSphereClass, dBoxClass, dCapsuleClass}) {
+        dGeomTriMeshEnableTC(g, geom_class, 0);
+      }
+      return g;
     }
   }
   return nullptr;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -358,6 +359,25 @@ TEST(robot_model, package_uris_use_the_package_path_and_name_every_place_searche
   EXPECT_THAT(error_of([] { load_robot_model(k_data + "/mesh_collision.urdf"); }),
               HasSubstr("mesh_collision.urdf: link 'base' collision mesh: "
                         "'package://nowhere/foot.stl': package 'nowhere' not found"));
+}
+
+TEST(robot_model, ros_package_path_is_searched_after_the_configured_folders) {
+  const std::string urdf =
+      robot("<link name=\"a\">" + k_inertial +
+            "<collision><geometry><mesh filename=\"package://data/unit_cube.stl\"/></geometry>"
+            "</collision></link>");
+  // this process alone: ctest runs every test in a process of its own
+  ::setenv("ROS_PACKAGE_PATH", ("/nonexistent/ros:" + k_data).c_str(), 1);
+  const robot_model m = parse_robot_model(urdf, "mem.urdf");
+  EXPECT_EQ(m.bodies[0].shapes[0].mesh->file, k_data + "/unit_cube.stl");
+  stride::robot::model_options options;
+  options.package_path = {"/nonexistent/first"};
+  EXPECT_THAT(error_of([&] {
+                options.use_ros_package_path = false;
+                parse_robot_model(urdf, "mem.urdf", options);
+              }),
+              HasSubstr("searched /nonexistent/first/data/unit_cube.stl (collision shapes"));
+  ::unsetenv("ROS_PACKAGE_PATH");
 }
 
 TEST(robot_model, unreadable_mesh_files_name_the_file_and_the_link) {
