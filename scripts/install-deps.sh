@@ -7,7 +7,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config make
-  libode-dev liburdfdom-dev libeigen3-dev libceres-dev
+  libode-dev liburdfdom-dev libassimp-dev libeigen3-dev libceres-dev
   libtinyxml2-dev libzip-dev zipcmp zipmerge ziptool zip unzip
   libcli11-dev cyclonedds-dev cyclonedds-tools libssl-dev iproute2
   libgtest-dev libgmock-dev libbenchmark-dev

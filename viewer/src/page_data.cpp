@@ -31,6 +31,8 @@ const char* shape_name(robot::shape_type t) {
       return "sphere";
     case robot::shape_type::capsule:
       return "capsule";
+    case robot::shape_type::mesh:
+      return "mesh";
   }
   return "box";
 }

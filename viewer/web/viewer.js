@@ -53,6 +53,8 @@
     } else if (s.type === 'capsule') {
       geometry = new THREE.CapsuleGeometry(s.size[0], s.size[1], 6, 16);
       turn = true;
+    } else if (s.type === 'mesh') {
+      return null;  // the page carries no triangles; the body's other shapes still show
     } else {
       geometry = new THREE.SphereGeometry(s.size[0], 20, 14);
     }
@@ -133,7 +135,10 @@
       const g = new THREE.Group();
       g.matrixAutoUpdate = false;
       const material = i === 0 ? root_material : materials[i % 2];
-      for (const s of b.shapes) g.add(shape_mesh(THREE, s, material));
+      for (const s of b.shapes) {
+        const mesh = shape_mesh(THREE, s, material);
+        if (mesh) g.add(mesh);
+      }
       scene.add(g);
       return g;
     });

@@ -48,6 +48,7 @@ void check_config(const robot_config& c) {
   for (const auto& [joint, servo] : c.joint_servos) {
     check_servo(servo, "joint_servos[" + joint + "]");
   }
+  require(positive(c.mimic_force_limit), "mimic_force_limit", "must be > 0");
   require(positive(c.imu.gyro_range), "imu.gyro_range", "must be > 0");
   require(positive(c.imu.acc_range), "imu.acc_range", "must be > 0");
   require(non_negative(c.fall_tilt), "fall_tilt", "must be >= 0");

@@ -2,6 +2,7 @@
 #include "ode_world.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -26,20 +27,6 @@ struct ode_library {
   ode_library& operator=(const ode_library&) = delete;
 };
 const ode_library g_ode_library;
-
-dGeomID make_geom(const collision_shape& s) {
-  switch (s.type) {
-    case shape_type::box:
-      return dCreateBox(nullptr, s.size[0], s.size[1], s.size[2]);
-    case shape_type::sphere:
-      return dCreateSphere(nullptr, s.size[0]);
-    case shape_type::cylinder:
-      return dCreateCylinder(nullptr, s.size[0], s.size[1]);
-    case shape_type::capsule:
-      return dCreateCapsule(nullptr, s.size[0], s.size[1]);
-  }
-  return nullptr;
-}
 
 void set_rotation(dGeomID g, const Eigen::Matrix3d& r, bool offset) {
   dMatrix3 m = {r(0, 0), r(0, 1), r(0, 2), 0,       r(1, 0), r(1, 1),
@@ -78,6 +65,37 @@ std::vector<double> weld_rigid_servos(robot_model& model, const robot_config& co
     weld_joint(model, j, q);
   }
   return weld_angle;
+}
+
+dGeomID ode_world::make_geom(const collision_shape& s) {
+  switch (s.type) {
+    case shape_type::box:
+      return dCreateBox(nullptr, s.size[0], s.size[1], s.size[2]);
+    case shape_type::sphere:
+      return dCreateSphere(nullptr, s.size[0]);
+    case shape_type::cylinder:
+      return dCreateCylinder(nullptr, s.size[0], s.size[1]);
+    case shape_type::capsule:
+      return dCreateCapsule(nullptr, s.size[0], s.size[1]);
+    case shape_type::mesh: {
+      static_assert(sizeof(dTriIndex) == sizeof(std::uint32_t), "ODE built with 16-bit indices");
+      const triangle_mesh& m = *s.mesh;
+      meshes.push_back(s.mesh);
+      dTriMeshDataID data = dGeomTriMeshDataCreate();
+      mesh_data.push_back(data);
+      dGeomTriMeshDataBuildDouble(data, m.vertices.data(), 3 * sizeof(double),
+                                  static_cast<int>(m.vertices.size() / 3), m.indices.data(),
+                                  static_cast<int>(m.indices.size()), 3 * sizeof(std::uint32_t));
+      dGeomID g = dCreateTriMesh(nullptr, data, nullptr, nullptr, nullptr);
+      // temporal coherence would carry collision caches from step to step, which a state image
+      // does not hold: contacts come from the current poses only
+      for (int geom_class : {dSphereClass, dBoxClass, dCapsuleClass}) {
+        dGeomTriMeshEnableTC(g, geom_class, 0);
+      }
+      return g;
+    }
+  }
+  return nullptr;
 }
 
 Eigen::Matrix3d body_rotation(dBodyID b) {
@@ -189,6 +207,8 @@ void ode_world::destroy() {
   for (const geom_entry& g : geoms) dGeomDestroy(g.id);
   for (const geom_entry& g : world_geoms) dGeomDestroy(g.id);
   if (floor != nullptr) dGeomDestroy(floor);
+  // after the geoms that use them
+  for (dTriMeshDataID d : mesh_data) dGeomTriMeshDataDestroy(d);
   if (contact_group != nullptr) dJointGroupDestroy(contact_group);
   dWorldSetStepThreadingImplementation(world, nullptr, nullptr);
   dWorldDestroy(world);  // destroys bodies and joints

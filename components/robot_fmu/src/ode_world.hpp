@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "plant_state.hpp"
@@ -76,9 +77,14 @@ struct ode_world {
   std::vector<geom_entry> geoms;
   /// Collision shapes welded to the world (fixed-base models).
   std::vector<geom_entry> world_geoms;
+  /// ODE's data of every mesh geom, and the triangles it points into (ODE does not copy them).
+  std::vector<dTriMeshDataID> mesh_data;
+  std::vector<std::shared_ptr<const triangle_mesh>> meshes;
 
  private:
   void build(const robot_config& config);
+  /// The ODE geom of one shape, in no space and on no body.
+  dGeomID make_geom(const collision_shape& s);
   void destroy();
 };
 

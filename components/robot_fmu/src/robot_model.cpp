@@ -2,6 +2,9 @@
 // (<servo id> in joints, <capsule> collisions), fixed joints merged into their parent body.
 #include "stride/robot/robot_model.hpp"
 
+#include <cstdlib>
+#include <filesystem>
+
 #include <tinyxml2.h>
 
 #include <console_bridge/console.h>
@@ -16,6 +19,8 @@
 #include <sstream>
 
 #include "frames.hpp"
+#include "stride/robot/mesh_file.hpp"
+#include "stride/robot/resource_path.hpp"
 
 namespace stride::robot {
 
@@ -111,14 +116,17 @@ extensions pre_pass(tinyxml2::XMLDocument& doc, const std::string& source) {
     int index = 0;
     for (auto* col = link->FirstChildElement("collision"); col != nullptr;
          col = col->NextSiblingElement("collision"), ++index) {
+      // urdfdom would drop such a collision silently
+      const std::string what = "link '" + name + "': <collision> " + std::to_string(index + 1);
       auto* geometry = col->FirstChildElement("geometry");
-      if (geometry == nullptr) continue;  // urdfdom reports it
+      if (geometry == nullptr) fail(source, what + " has no <geometry>");
       auto* shape = geometry->FirstChildElement();
-      if (shape == nullptr) continue;
+      if (shape == nullptr) fail(source, what + ": <geometry> is empty");
       const std::string kind = shape->Name();
-      if (kind == "mesh") {
-        fail(source, "link '" + name + "': mesh collision geometry is not supported (use box, " +
-                         "cylinder, sphere or capsule primitives)");
+      if (kind != "box" && kind != "cylinder" && kind != "sphere" && kind != "capsule" &&
+          kind != "mesh") {
+        fail(source, what + ": unsupported geometry <" + kind +
+                         "> (collision shapes: box, cylinder, sphere, capsule, mesh)");
       }
       if (kind == "capsule") {
         ext.capsules.insert({name, index});
@@ -195,8 +203,29 @@ void check_positive(double v, const std::string& source, const std::string& what
   if (!finite(v) || v <= 0.0) fail(source, what + " must be a positive number");
 }
 
+// where the files a URDF names are looked for
+struct file_context {
+  std::string base_dir;
+  std::vector<std::string> search_path;
+};
+
+collision_shape make_mesh(const urdf::Mesh& m, const std::string& link, const std::string& source,
+                          const file_context& files) {
+  collision_shape s;
+  s.link = link;
+  s.type = shape_type::mesh;
+  s.size = {m.scale.x, m.scale.y, m.scale.z};
+  try {
+    s.mesh = load_mesh(resolve_resource(m.filename, files.base_dir, files.search_path), s.size);
+  } catch (const model_error& e) {
+    fail(source, "link '" + link + "' collision mesh: " + e.what() +
+                     " (collision shapes: box, cylinder, sphere, capsule, mesh)");
+  }
+  return s;
+}
+
 collision_shape make_shape(const urdf::Collision& col, bool capsule, const std::string& link,
-                           const std::string& source) {
+                           const std::string& source, const file_context& files) {
   if (!col.geometry) fail(source, "link '" + link + "': collision without geometry");
   collision_shape s;
   s.link = link;
@@ -230,10 +259,37 @@ collision_shape make_shape(const urdf::Collision& col, bool capsule, const std::
       s.size = {sp.radius, 0.0, 0.0};
       break;
     }
+    case urdf::Geometry::MESH:
+      return make_mesh(static_cast<const urdf::Mesh&>(*col.geometry), link, source, files);
     default:
       fail(source, "link '" + link + "': unsupported collision geometry");
   }
   return s;
+}
+
+// mimic masters by joint index, once every movable joint has one
+void resolve_mimics(const urdf::ModelInterface& urdf_model, robot_model& model,
+                    const std::string& source) {
+  for (model_joint& mj : model.joints) {
+    const auto follower = urdf_model.getJoint(mj.name);
+    if (!follower || !follower->mimic) continue;
+    const std::string jwhat = "joint '" + mj.name + "'";
+    const std::string master = follower->mimic->joint_name;
+    const auto it = std::find_if(model.joints.begin(), model.joints.end(),
+                                 [&](const model_joint& j) { return j.name == master; });
+    if (it == model.joints.end()) {
+      const auto fixed = urdf_model.getJoint(master);
+      fail(source, jwhat + ": <mimic> joint '" + master + "' " +
+                       (fixed ? "is a fixed joint" : "does not exist"));
+    }
+    if (it->name == mj.name) fail(source, jwhat + ": <mimic> names the joint itself");
+    const auto master_urdf = urdf_model.getJoint(master);
+    if (master_urdf->mimic) {
+      fail(source, jwhat + ": <mimic> joint '" + master + "' is itself a mimic joint (chains of " +
+                       "mimic joints are not supported)");
+    }
+    mj.mimic_joint = static_cast<int>(it - model.joints.begin());
+  }
 }
 
 struct link_slot {
@@ -242,7 +298,7 @@ struct link_slot {
 };
 
 robot_model convert(const urdf::ModelInterface& urdf_model, const extensions& ext,
-                    const std::string& source) {
+                    const std::string& source, const file_context& files) {
   robot_model model;
   model.name = urdf_model.getName();
   model.source = source;
@@ -283,7 +339,7 @@ robot_model convert(const urdf::ModelInterface& urdf_model, const extensions& ex
     for (std::size_t k = 0; k < link.collision_array.size(); ++k) {
       const auto& col = *link.collision_array[k];
       collision_shape s = make_shape(col, ext.capsules.count({link.name, static_cast<int>(k)}) > 0,
-                                     link.name, source);
+                                     link.name, source, files);
       s.origin = to_pose(slot.in_body * from_urdf(col.origin));
       if (slot.body >= 0) {
         model.bodies[static_cast<std::size_t>(slot.body)].shapes.push_back(s);
@@ -315,7 +371,9 @@ robot_model convert(const urdf::ModelInterface& urdf_model, const extensions& ex
     auto [link, joint] = pending.back();
     pending.pop_back();
     const std::string jwhat = "joint '" + joint->name + "'";
-    if (joint->mimic) fail(source, jwhat + ": <mimic> joints are not supported");
+    if (joint->mimic && joint->type == urdf::Joint::FIXED) {
+      fail(source, jwhat + ": a fixed joint cannot <mimic> another joint");
+    }
     const link_slot& parent = slots.at(joint->parent_link_name);
     const Eigen::Isometry3d origin =
         parent.in_body * from_urdf(joint->parent_to_joint_origin_transform);
@@ -366,6 +424,14 @@ robot_model convert(const urdf::ModelInterface& urdf_model, const extensions& ex
       if (auto it = ext.servo_of_joint.find(joint->name); it != ext.servo_of_joint.end()) {
         mj.servo_id = it->second;
       }
+      if (joint->mimic) {
+        if (mj.servo_id > 0) fail(source, jwhat + ": a <mimic> joint cannot carry a <servo>");
+        mj.mimic_multiplier = joint->mimic->multiplier;
+        mj.mimic_offset = joint->mimic->offset;
+        if (!finite(mj.mimic_multiplier) || !finite(mj.mimic_offset)) {
+          fail(source, jwhat + ": <mimic> multiplier and offset must be finite");
+        }
+      }
       mj.parent_body = parent.body;
       mj.child_body = static_cast<int>(model.bodies.size());
       mj.origin = to_pose(origin);
@@ -384,6 +450,8 @@ robot_model convert(const urdf::ModelInterface& urdf_model, const extensions& ex
       pending.push_back({urdf_model.getLink((*it)->child_link_name), *it});
     }
   }
+
+  resolve_mimics(urdf_model, model, source);
 
   // finish the mass properties of every body
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
@@ -471,6 +539,12 @@ void weld_joint(robot_model& model, int joint, double q) {
     throw model_error(model.source + ": joint '" + mj.name + "' connects to the world; it cannot " +
                       "be welded");
   }
+  for (const model_joint& f : model.joints) {
+    if (f.mimic_joint == joint) {
+      throw model_error(model.source + ": joint '" + mj.name + "' is followed by mimic joint '" +
+                        f.name + "'; it cannot be welded");
+    }
+  }
   // child body frame in the parent body frame at position q
   const Eigen::Isometry3d t = to_eigen(mj.origin) * joint_motion(mj, q);
 
@@ -516,11 +590,13 @@ void weld_joint(robot_model& model, int joint, double q) {
   for (model_joint& j : model.joints) {
     shift(j.parent_body);
     shift(j.child_body);
+    if (j.mimic_joint > joint) --j.mimic_joint;
   }
   for (link_frame& l : model.links) shift(l.body);
 }
 
-robot_model parse_robot_model(const std::string& urdf_xml, const std::string& source) {
+robot_model parse_robot_model(const std::string& urdf_xml, const std::string& source,
+                              const model_options& options) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(urdf_xml.c_str(), urdf_xml.size()) != tinyxml2::XML_SUCCESS) {
     fail(source, std::string("XML error: ") + doc.ErrorStr());
@@ -548,16 +624,22 @@ robot_model parse_robot_model(const std::string& urdf_xml, const std::string& so
     fail(source,
          "URDF error: " + (messages.empty() ? std::string("urdfdom rejected the file") : messages));
   }
-  return convert(*parsed, ext, source);
+  file_context files;
+  files.base_dir = options.base_dir.empty() ? std::filesystem::path(source).parent_path().string()
+                                            : options.base_dir;
+  files.search_path =
+      package_search_path(options.package_path,
+                          options.use_ros_package_path ? std::getenv("ROS_PACKAGE_PATH") : nullptr);
+  return convert(*parsed, ext, source, files);
 }
 
-robot_model load_robot_model(const std::string& urdf_path) {
+robot_model load_robot_model(const std::string& urdf_path, const model_options& options) {
   if (urdf_path.empty()) throw model_error("robot URDF path is empty");
   std::ifstream in(urdf_path, std::ios::binary);
   if (!in) fail(urdf_path, "cannot open file");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_robot_model(text.str(), urdf_path);
+  return parse_robot_model(text.str(), urdf_path, options);
 }
 
 }  // namespace stride::robot

@@ -10,6 +10,7 @@
 #include "config_check.hpp"
 #include "contacts.hpp"
 #include "frames.hpp"
+#include "mimic.hpp"
 #include "ode_world.hpp"
 #include "plant_state.hpp"
 #include "sensors.hpp"
@@ -25,7 +26,9 @@ namespace {
 
 robot_model load_checked_model(const robot_config& c) {
   check_config(c);
-  robot_model m = load_robot_model(c.urdf_path);
+  model_options options;
+  options.package_path = c.package_path;
+  robot_model m = load_robot_model(c.urdf_path, options);
   assign_servo_joints(m, c);
   check_joint_servos(m, c);
   check_initial_pose(c, m.servo_count());
@@ -135,6 +138,13 @@ struct robot_sim::impl {
                                                       model.joints[static_cast<std::size_t>(j)], v);
       }
     }
+    // mimic joints start where they will be held (their masters come first or later in q)
+    for (std::size_t j = 0; j < q.size(); ++j) {
+      const model_joint& mj = model.joints[j];
+      if (mj.mimic_joint >= 0) {
+        q[j] = mj.mimic_multiplier * q[static_cast<std::size_t>(mj.mimic_joint)] + mj.mimic_offset;
+      }
+    }
     state.servo_velocity.assign(model.joints.size(), 0.0);
     state.joint_torques.assign(static_cast<std::size_t>(servo_n), 0.0);
     state.link_forces.assign(contact_bodies.size(), Eigen::Vector3d::Zero());
@@ -154,6 +164,7 @@ struct robot_sim::impl {
     const double dt = cfg.physics_step;
     const Eigen::Vector3d v_before = imu_velocity(world, sensors);
     drive_joints(world, servos, dt, state.targets, state.servo_velocity);
+    drive_mimic_joints(world, dt, cfg.mimic_force_limit, state.servo_velocity);
     if (state.push_x != 0.0 || state.push_y != 0.0) {
       dBodyAddForce(world.bodies[0], state.push_x, state.push_y, 0.0);
     }

@@ -28,6 +28,14 @@ double lowest_point(const collision_shape& s, const Eigen::Isometry3d& t) {
     }
     case shape_type::capsule:
       return c.z() - 0.5 * std::abs(r(2, 2)) * s.size[1] - s.size[0];
+    case shape_type::mesh: {
+      double lowest = std::numeric_limits<double>::infinity();
+      const std::vector<double>& v = s.mesh->vertices;
+      for (std::size_t k = 0; k + 2 < v.size(); k += 3) {
+        lowest = std::min(lowest, r(2, 0) * v[k] + r(2, 1) * v[k + 1] + r(2, 2) * v[k + 2]);
+      }
+      return c.z() + lowest;
+    }
   }
   return c.z();
 }

@@ -61,6 +61,8 @@ TEST(config_check, every_out_of_range_setting_names_its_key) {
       {"servo.damping", [](robot_config& c) { c.servo.damping = -1.0; }},
       {"servo.compliance", [](robot_config& c) { c.servo.compliance = k_nan; }},
       {"servo.static_friction", [](robot_config& c) { c.servo.static_friction = -1.0; }},
+      {"mimic_force_limit", [](robot_config& c) { c.mimic_force_limit = 0.0; }},
+      {"mimic_force_limit", [](robot_config& c) { c.mimic_force_limit = k_nan; }},
       {"imu.gyro_range", [](robot_config& c) { c.imu.gyro_range = 0.0; }},
       {"imu.acc_range", [](robot_config& c) { c.imu.acc_range = -1.0; }},
       {"fall_tilt", [](robot_config& c) { c.fall_tilt = -0.1; }},

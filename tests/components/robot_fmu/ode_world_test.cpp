@@ -28,6 +28,38 @@ TEST(ode_world, the_bodies_start_in_the_zero_pose_of_the_model) {
   EXPECT_EQ(sim.outputs().joint_angles, std::vector<double>(3, 0.0));
 }
 
+TEST(ode_world, a_dropped_mesh_box_comes_to_rest_at_its_analytic_height) {
+  // mesh_box.urdf: 1 kg, its mesh 0.1 m tall once rolled, centre 0.03 m below the link origin;
+  // dropped from 5 cm it settles with the link origin at 0.05 + 0.03 m less the contact give
+  robot_config c;
+  c.urdf_path = k_data + "/mesh_box.urdf";
+  c.reset_clearance = 0.05;
+  robot_sim sim(c);
+  sim.step(3.0);
+  const auto& out = sim.outputs();
+  // the give: n contacts, each a spring k = soft_erp / (h · soft_cfm) (ODE's ERP/CFM spring
+  // equivalence), share m·g: sink = m·g·h·soft_cfm / (n·soft_erp), at most this with n >= 4
+  // corners on the floor
+  const double sink_max =
+      1.0 * c.gravity * c.physics_step * c.contact.soft_cfm / (4 * c.contact.soft_erp);
+  EXPECT_LE(out.base_position[2], 0.08);
+  EXPECT_GE(out.base_position[2], 0.08 - sink_max);
+  // at rest: half a second later it has not moved
+  const double z = out.base_position[2];
+  sim.step(0.5);
+  EXPECT_NEAR(sim.outputs().base_position[2], z, 1e-9);
+  // the deepest corner sinks at least as far as the centre and at most as far as one contact
+  // carrying the whole weight (k·sink = m·g)
+  const double sink_one = 4 * sink_max;
+  EXPECT_GE(out.max_penetration, 0.08 - z - 1e-12);
+  EXPECT_LE(out.max_penetration, sink_one);
+  // so it lies flat within the give across its 0.05 m narrow side (measured: roll 3.3e-4 rad,
+  // from the uneven share of ODE's mesh-plane contacts among the corners)
+  EXPECT_LE(std::abs(sim.outputs().roll), sink_one / 0.05);
+  EXPECT_LE(std::abs(sim.outputs().pitch), sink_one / 0.2);
+  EXPECT_NEAR(out.com[2], out.base_position[2], 1e-12);  // the centre of mass is at the origin
+}
+
 TEST(ode_world, rigid_servos_are_welded_at_their_initial_angle_within_the_limits) {
   robot_config c;
   c.urdf_path = k_data + "/arm.urdf";

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -19,6 +22,7 @@ using stride::robot::model_error;
 using stride::robot::parse_robot_model;
 using stride::robot::robot_model;
 using stride::robot::shape_type;
+using stride::robot::weld_joint;
 using testing::HasSubstr;
 
 const std::string k_data = STRIDE_TEST_DATA_DIR;
@@ -270,10 +274,6 @@ TEST(robot_model, urdfdom_errors_are_captured_into_the_message) {
 }
 
 TEST(robot_model, unsupported_content_names_the_element) {
-  EXPECT_THAT(error_of([] { load_robot_model(k_data + "/mesh_collision.urdf"); }),
-              HasSubstr("link 'base': mesh collision geometry is not supported"));
-  EXPECT_THAT(error_of([] { load_robot_model(k_data + "/mimic.urdf"); }),
-              HasSubstr("joint 'grip_b': <mimic> joints are not supported"));
   const std::string floating =
       robot("<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" + k_inertial +
             "</link><joint name=\"free\" type=\"floating\"><parent "
@@ -286,6 +286,163 @@ TEST(robot_model, unsupported_content_names_the_element) {
             "link=\"a\"/><child link=\"b\"/><axis xyz=\"0 0 1\"/></joint>");
   EXPECT_THAT(error_of([&] { parse_robot_model(planar, "mem.urdf"); }),
               HasSubstr("joint 'slide2d': planar joints are not supported"));
+}
+
+TEST(robot_model, a_collision_without_geometry_is_named) {
+  const std::string empty = robot("<link name=\"a\">" + k_inertial +
+                                  "<collision><origin xyz=\"0 0 0\"/></collision></link>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(empty, "mem.urdf"); }),
+              HasSubstr("mem.urdf: link 'a': <collision> 1 has no <geometry>"));
+  const std::string hollow =
+      robot("<link name=\"a\">" + k_inertial + "<collision><geometry/></collision></link>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(hollow, "mem.urdf"); }),
+              HasSubstr("mem.urdf: link 'a': <collision> 1: <geometry> is empty"));
+  const std::string unknown =
+      robot("<link name=\"a\">" + k_inertial +
+            "<collision><geometry><box size=\"1 1 1\"/></geometry></collision>"
+            "<collision><geometry><cone/></geometry></collision></link>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(unknown, "mem.urdf"); }),
+              HasSubstr("mem.urdf: link 'a': <collision> 2: unsupported geometry <cone> "
+                        "(collision shapes: box, cylinder, sphere, capsule, mesh)"));
+}
+
+TEST(robot_model, two_root_links_are_named) {
+  const std::string two =
+      robot("<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" + k_inertial + "</link>");
+  const std::string msg = error_of([&] { parse_robot_model(two, "mem.urdf"); });
+  EXPECT_THAT(msg, HasSubstr("mem.urdf: URDF error"));
+  EXPECT_THAT(msg, HasSubstr("root"));
+}
+
+TEST(robot_model, a_mesh_collision_keeps_its_scale_origin_and_triangles) {
+  // mesh_box.urdf: unit_cube.stl (12 triangles) scaled 0.2 0.1 0.05, origin z -0.03, roll 90 deg;
+  // its <visual> names a package that exists nowhere: visuals are not read
+  const robot_model m = load_robot_model(k_data + "/mesh_box.urdf");
+  ASSERT_EQ(m.bodies.size(), 1u);
+  ASSERT_EQ(m.bodies[0].shapes.size(), 1u);
+  const auto& s = m.bodies[0].shapes[0];
+  EXPECT_EQ(s.type, shape_type::mesh);
+  EXPECT_EQ(s.link, "crate");
+  EXPECT_EQ(s.size, (stride::robot::vec3{0.2, 0.1, 0.05}));
+  ASSERT_NE(s.mesh, nullptr);
+  EXPECT_EQ(s.mesh->indices.size(), 36u);
+  EXPECT_EQ(s.mesh->file, k_data + "/unit_cube.stl");  // relative to the URDF's folder
+  EXPECT_NEAR(s.origin.position[2], -0.03, 1e-15);
+  // Rx(90 deg): y -> z, z -> -y
+  const std::array<double, 9> rx = {1, 0, 0, 0, 0, -1, 0, 1, 0};
+  for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(s.origin.rotation[k], rx[k], 1e-12) << k;
+  double top = -1.0;
+  for (std::size_t k = 1; k < s.mesh->vertices.size(); k += 3) {
+    top = std::max(top, s.mesh->vertices[k]);  // scaled y, before the origin's rotation
+  }
+  EXPECT_DOUBLE_EQ(top, 0.05);
+}
+
+TEST(robot_model, package_uris_use_the_package_path_and_name_every_place_searched) {
+  // the test data folder is itself a package named "data"
+  const std::string urdf =
+      robot("<link name=\"a\">" + k_inertial +
+            "<collision><geometry><mesh filename=\"package://data/unit_cube.stl\"/></geometry>"
+            "</collision></link>");
+  stride::robot::model_options options;
+  options.package_path = {k_data};
+  options.use_ros_package_path = false;
+  const robot_model m = parse_robot_model(urdf, "mem.urdf", options);
+  EXPECT_EQ(m.bodies[0].shapes[0].mesh->file, k_data + "/unit_cube.stl");
+  // without it the package is not found; the message names the link, URI and places searched
+  options.package_path = {"/nonexistent/one", "/nonexistent/two"};
+  const std::string msg = error_of([&] { parse_robot_model(urdf, "mem.urdf", options); });
+  EXPECT_THAT(msg, HasSubstr("mem.urdf: link 'a' collision mesh: 'package://data/unit_cube.stl': "
+                             "package 'data' not found; searched /nonexistent/one/data/"
+                             "unit_cube.stl, /nonexistent/two/data/unit_cube.stl"));
+  EXPECT_THAT(msg, HasSubstr("(collision shapes: box, cylinder, sphere, capsule, mesh)"));
+  EXPECT_THAT(error_of([] { load_robot_model(k_data + "/mesh_collision.urdf"); }),
+              HasSubstr("mesh_collision.urdf: link 'base' collision mesh: "
+                        "'package://nowhere/foot.stl': package 'nowhere' not found"));
+}
+
+TEST(robot_model, ros_package_path_is_searched_after_the_configured_folders) {
+  const std::string urdf =
+      robot("<link name=\"a\">" + k_inertial +
+            "<collision><geometry><mesh filename=\"package://data/unit_cube.stl\"/></geometry>"
+            "</collision></link>");
+  // this process alone: ctest runs every test in a process of its own
+  ::setenv("ROS_PACKAGE_PATH", ("/nonexistent/ros:" + k_data).c_str(), 1);
+  const robot_model m = parse_robot_model(urdf, "mem.urdf");
+  EXPECT_EQ(m.bodies[0].shapes[0].mesh->file, k_data + "/unit_cube.stl");
+  stride::robot::model_options options;
+  options.package_path = {"/nonexistent/first"};
+  EXPECT_THAT(error_of([&] {
+                options.use_ros_package_path = false;
+                parse_robot_model(urdf, "mem.urdf", options);
+              }),
+              HasSubstr("searched /nonexistent/first/data/unit_cube.stl (collision shapes"));
+  ::unsetenv("ROS_PACKAGE_PATH");
+}
+
+TEST(robot_model, unreadable_mesh_files_name_the_file_and_the_link) {
+  const std::string obj =
+      robot("<link name=\"a\">" + k_inertial +
+            "<collision><geometry><mesh filename=\"hull.obj\"/></geometry></collision></link>");
+  EXPECT_THAT(error_of([&] { parse_robot_model(obj, k_data + "/mem.urdf"); }),
+              HasSubstr("link 'a' collision mesh: mesh file '" + k_data +
+                        "/hull.obj': unsupported format '.obj'"));
+  const std::string missing = robot(
+      "<link name=\"a\">" + k_inertial +
+      "<collision><geometry><mesh filename=\"file://gone.stl\"/></geometry></collision></link>");
+  EXPECT_THAT(
+      error_of([&] { parse_robot_model(missing, k_data + "/mem.urdf"); }),
+      HasSubstr("link 'a' collision mesh: mesh file '" + k_data + "/gone.stl' cannot be read"));
+}
+
+TEST(robot_model, mimic_joints_name_their_master) {
+  const robot_model m = load_robot_model(k_data + "/mimic.urdf");
+  ASSERT_EQ(m.joints.size(), 2u);
+  EXPECT_EQ(m.joints[0].mimic_joint, -1);
+  EXPECT_EQ(m.joints[1].name, "grip_b");
+  EXPECT_EQ(m.joints[1].mimic_joint, 0);
+  EXPECT_EQ(m.joints[1].mimic_multiplier, 1.0);
+  EXPECT_EQ(m.joints[1].mimic_offset, 0.0);
+  // welding the master would leave the follower without one
+  robot_model welded = m;
+  EXPECT_THAT(error_of([&] { weld_joint(welded, 0, 0.0); }), HasSubstr("joint"));
+}
+
+TEST(robot_model, impossible_mimic_joints_are_named) {
+  const std::string links = "<link name=\"a\">" + k_inertial + "</link><link name=\"b\">" +
+                            k_inertial + "</link><link name=\"c\">" + k_inertial +
+                            "</link><link name=\"d\">" + k_inertial + "</link>";
+  const auto joint = [](const std::string& name, const std::string& type, const std::string& child,
+                        const std::string& inner) {
+    return "<joint name=\"" + name + "\" type=\"" + type + "\"><parent link=\"a\"/><child link=\"" +
+           child +
+           "\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" "
+           "velocity=\"1\"/>" +
+           inner + "</joint>";
+  };
+  const auto mimic = [](const std::string& master) { return "<mimic joint=\"" + master + "\"/>"; };
+  const auto parse = [&](const std::string& joints) {
+    return error_of([&] { parse_robot_model(robot(links + joints), "m.urdf"); });
+  };
+  EXPECT_THAT(parse(joint("j1", "revolute", "b", "") + joint("j2", "revolute", "c", mimic("nope")) +
+                    joint("j3", "revolute", "d", "")),
+              HasSubstr("m.urdf: joint 'j2': <mimic> joint 'nope' does not exist"));
+  EXPECT_THAT(parse(joint("j1", "revolute", "b", "") + joint("j2", "revolute", "c", mimic("j1")) +
+                    joint("j3", "revolute", "d", mimic("j2"))),
+              HasSubstr("m.urdf: joint 'j3': <mimic> joint 'j2' is itself a mimic joint"));
+  EXPECT_THAT(parse(joint("j1", "fixed", "b", "") + joint("j2", "revolute", "c", mimic("j1")) +
+                    joint("j3", "revolute", "d", "")),
+              HasSubstr("m.urdf: joint 'j2': <mimic> joint 'j1' is a fixed joint"));
+  EXPECT_THAT(parse(joint("j1", "revolute", "b", "") + joint("j2", "fixed", "c", mimic("j1")) +
+                    joint("j3", "revolute", "d", "")),
+              HasSubstr("m.urdf: joint 'j2': a fixed joint cannot <mimic> another joint"));
+  EXPECT_THAT(parse(joint("j1", "revolute", "b", "") +
+                    joint("j2", "revolute", "c", "<servo id=\"1\"/>" + mimic("j1")) +
+                    joint("j3", "revolute", "d", "")),
+              HasSubstr("m.urdf: joint 'j2': a <mimic> joint cannot carry a <servo>"));
+  EXPECT_THAT(parse(joint("j1", "revolute", "b", "") + joint("j2", "revolute", "c", mimic("j2")) +
+                    joint("j3", "revolute", "d", "")),
+              HasSubstr("m.urdf: joint 'j2': <mimic> names the joint itself"));
 }
 
 TEST(robot_model, joints_that_do_not_form_a_tree_are_named) {

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -158,6 +161,28 @@ TEST(robot_sim, step_runs_whole_physics_steps_and_carries_the_remainder) {
   for (int k = 0; k < 1000; ++k) sim.step(0.004);  // 4.016 s: exactly 502 steps
   EXPECT_DOUBLE_EQ(sim.outputs().time, 502 * 0.008);
   EXPECT_THROW(sim.step(-0.001), std::invalid_argument);
+}
+
+TEST(robot_sim, the_configured_package_path_finds_meshes) {
+  // a URDF outside the data folder naming the cube through package://data/ (the data folder is
+  // the package "data"): found only with robot_config::package_path
+  const std::string urdf =
+      (std::filesystem::temp_directory_path() / "stride_robot_sim_test_package.urdf").string();
+  std::ofstream(urdf) << "<?xml version=\"1.0\"?><robot name=\"p\"><link name=\"a\"><inertial>"
+                         "<mass value=\"1\"/><inertia ixx=\"0.1\" ixy=\"0\" ixz=\"0\" "
+                         "iyy=\"0.1\" iyz=\"0\" izz=\"0.1\"/></inertial><collision><geometry>"
+                         "<mesh filename=\"package://data/unit_cube.stl\" scale=\"2 2 2\"/>"
+                         "</geometry></collision></link></robot>";
+  robot_config c;
+  c.urdf_path = urdf;
+  c.package_path = {"/nonexistent", k_data};
+  const robot_sim sim(c);
+  EXPECT_EQ(sim.model().bodies[0].shapes[0].mesh->file, k_data + "/unit_cube.stl");
+  EXPECT_NEAR(sim.outputs().base_position[2], 1.0, 1e-12);  // a 2 m cube standing on the floor
+  c.package_path.clear();
+  ::setenv("ROS_PACKAGE_PATH", "", 1);  // nothing from the environment of the test run
+  EXPECT_THROW(robot_sim{c}, stride::robot::model_error);
+  std::filesystem::remove(urdf);
 }
 
 TEST(robot_sim, bad_settings_name_the_key) {

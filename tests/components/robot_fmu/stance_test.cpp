@@ -18,6 +18,7 @@ namespace darwin = stride::robot::darwin;
 using stride::robot::robot_config;
 using stride::robot::robot_sim;
 
+const std::string k_data = STRIDE_TEST_DATA_DIR;
 const std::string k_darwin = std::string(STRIDE_SOURCE_DIR) + "/models/darwin-op/darwin-op.urdf";
 
 Eigen::Matrix3d rotation(const stride::robot::mat3& m) {
@@ -103,6 +104,18 @@ TEST(stance, without_feet_the_base_stands_upright) {
   EXPECT_NEAR(std::acos(s.normal.z()), darwin::k_walk_ready_lean_deg * std::numbers::pi / 180.0,
               0.01);
   EXPECT_NEAR(s.lowest, 0.0, 1e-9);
+}
+
+TEST(stance, a_mesh_rests_on_its_lowest_vertex) {
+  // mesh_box.urdf: the mesh's 0.1 m side is vertical (rolled 90 deg), its centre 0.03 m below
+  // the link origin: lowest vertex on the floor puts the origin at 0.05 + 0.03 m
+  robot_config c;
+  c.urdf_path = k_data + "/mesh_box.urdf";
+  robot_sim sim(c);
+  EXPECT_NEAR(sim.outputs().base_position[2], 0.08, 1e-12);
+  c.reset_clearance = 0.02;
+  robot_sim lifted(c);
+  EXPECT_NEAR(lifted.outputs().base_position[2], 0.10, 1e-12);
 }
 
 }  // namespace

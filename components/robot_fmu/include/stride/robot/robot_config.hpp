@@ -67,6 +67,12 @@ struct imu_config {
 struct robot_config {
   /// URDF file to load (required).
   std::string urdf_path;
+  /// Folders searched for package://NAME/... file names in the URDF, before ROS_PACKAGE_PATH:
+  /// each the package folder itself (last component NAME) or a folder holding NAME/.
+  std::vector<std::string> package_path;
+  /// Force (N·m, N for prismatic joints) a <mimic> joint's motor may use to follow its master:
+  /// generous, so the follower never gives way before the master's servo does.
+  double mimic_force_limit = 1000.0;
 
   physics_solver solver = physics_solver::world_step;
   /// Fixed internal physics step, s.

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -26,14 +28,26 @@ struct pose {
   mat3 rotation{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
 };
 
-enum class shape_type { box, cylinder, sphere, capsule };
+enum class shape_type { box, cylinder, sphere, capsule, mesh };
+
+/// Triangles read from a mesh file, scaled, in the frame of the <collision> origin.
+struct triangle_mesh {
+  /// x, y, z of every vertex, m.
+  std::vector<double> vertices;
+  /// Three vertex indices per triangle, counter-clockwise seen from outside.
+  std::vector<std::uint32_t> indices;
+  /// Resolved path of the file (for messages).
+  std::string file;
+};
 
 /// One collision primitive. Cylinders and capsules have their axis along z of `origin`.
 struct collision_shape {
   shape_type type = shape_type::box;
   /// box: full lengths x, y, z; cylinder/capsule: radius, length (capsule: cylinder part), 0;
-  /// sphere: radius, 0, 0.
+  /// sphere: radius, 0, 0; mesh: the scale applied to the file's vertices.
   vec3 size{0.0, 0.0, 0.0};
+  /// mesh only: the triangles, shared by every copy of the shape (immutable once loaded).
+  std::shared_ptr<const triangle_mesh> mesh;
   /// Pose in the frame of the body's root link.
   pose origin;
   /// URDF link the shape was declared in (for messages).
@@ -73,6 +87,11 @@ struct model_joint {
   double friction = 0.0;
   /// Servo ID from the <servo id="N"/> extension element; 0 = passive joint.
   int servo_id = 0;
+  /// URDF <mimic>: index into robot_model::joints of the joint this one follows (-1: none); the
+  /// plant drives this joint to mimic_multiplier · q_master + mimic_offset.
+  int mimic_joint = -1;
+  double mimic_multiplier = 1.0;
+  double mimic_offset = 0.0;
 };
 
 /// Where every URDF link sits: on which body (-1 = world) and where in that body's frame.
@@ -114,15 +133,30 @@ struct robot_model {
 
 /// Replaces movable joint `joint` by a weld at joint position `q`: its child body (mass, inertia,
 /// shapes, link frames and child joints) is merged into the parent body; later body and joint
-/// indices shift down by one. Throws model_error if the child is the world.
+/// indices shift down by one. Throws model_error if the child is the world or if a mimic joint
+/// follows `joint`.
 void weld_joint(robot_model& model, int joint, double q);
 
-/// Reads and validates a URDF file. Supported: revolute, continuous, prismatic and fixed joints;
-/// box, cylinder, sphere and (extension) capsule collisions. Visual elements are ignored.
+/// How files named inside a URDF (meshes) are found.
+struct model_options {
+  /// Searched for package://NAME/... before the folders of ROS_PACKAGE_PATH: each entry is the
+  /// package folder itself (last component NAME) or a folder holding NAME/.
+  std::vector<std::string> package_path;
+  /// Read ROS_PACKAGE_PATH (colon-separated) from the environment.
+  bool use_ros_package_path = true;
+  /// Folder that relative file names are resolved against; empty: the folder of the URDF file
+  /// (of `source` for parse_robot_model).
+  std::string base_dir;
+};
+
+/// Reads and validates a URDF file. Supported: revolute, continuous, prismatic and fixed joints,
+/// <mimic> on revolute, continuous and prismatic joints; box, cylinder, sphere, mesh (STL, DAE)
+/// and (extension) capsule collisions. Visual elements are ignored (the plant does not render).
 /// Throws model_error naming the file and element for anything else.
-robot_model load_robot_model(const std::string& urdf_path);
+robot_model load_robot_model(const std::string& urdf_path, const model_options& options = {});
 
 /// Same as load_robot_model for a URDF held in memory; `source` names it in messages.
-robot_model parse_robot_model(const std::string& urdf_xml, const std::string& source);
+robot_model parse_robot_model(const std::string& urdf_xml, const std::string& source,
+                              const model_options& options = {});
 
 }  // namespace stride::robot
