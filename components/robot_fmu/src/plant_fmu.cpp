@@ -47,6 +47,14 @@ struct plant_spec {
   plant_layout at;
 };
 
+// a packaged FMU finds its files in its resources only, whatever the machine's ROS_PACKAGE_PATH
+model_options model_options_of(const plant_spec& s) {
+  model_options o;
+  o.package_path = s.package_path;
+  o.use_ros_package_path = false;
+  return o;
+}
+
 const char* unit_of(const model_joint& j) {
   return j.type == joint_type::prismatic ? "m" : "rad";
 }
@@ -307,7 +315,8 @@ class plant_model final : public sdk::buffer_model {
     if (!chosen.empty()) {
       urdf = sdk::find_resource(std::string(chosen), context_.resource_dir).string();
     }
-    robot_model model = urdf == spec_->urdf_path ? spec_->model : load_robot_model(urdf);
+    robot_model model =
+        urdf == spec_->urdf_path ? spec_->model : load_robot_model(urdf, model_options_of(*spec_));
     const std::string preset =
         spec_->profile.presets.empty() ? "" : std::string(value<sdk::text>(at.preset).view());
     const std::span<const bool> welds_on(&value<bool>(at.welds), spec_->profile.welds.size());
@@ -318,6 +327,7 @@ class plant_model final : public sdk::buffer_model {
     }
     r.config.urdf_path = urdf;
     r.config.package_path = spec_->package_path;
+    r.config.use_ros_package_path = false;
     r.config.solver =
         value<int>(at.solver) == 0 ? physics_solver::world_step : physics_solver::quick_step;
     sim_ = std::make_unique<robot_sim>(std::move(r.config));
@@ -382,7 +392,7 @@ std::shared_ptr<const sdk::fmu_definition> load_plant_fmu(const std::string& res
     spec->package_path.push_back((dir / p).string());
   }
   try {
-    spec->model = load_robot_model(spec->urdf_path);
+    spec->model = load_robot_model(spec->urdf_path, model_options_of(*spec));
     spec->profile = manifest.profile.empty()
                         ? default_plant_profile()
                         : load_plant_profile((dir / manifest.profile).string());

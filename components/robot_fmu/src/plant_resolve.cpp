@@ -56,7 +56,9 @@ std::vector<int> actuated_joints(const plant_profile& p, const robot_model& m) {
   }
   std::vector<int> out;
   for (std::size_t j = 0; j < m.joints.size(); ++j) {
-    if (!matches_any(p.passive, m.joints[j].name)) out.push_back(static_cast<int>(j));
+    // a mimic joint follows its master and is never a servo
+    if (m.joints[j].mimic_joint >= 0 || matches_any(p.passive, m.joints[j].name)) continue;
+    out.push_back(static_cast<int>(j));
   }
   if (p.joint_order == "servo_id") {
     for (int j : out) {

@@ -28,6 +28,7 @@ robot_model load_checked_model(const robot_config& c) {
   check_config(c);
   model_options options;
   options.package_path = c.package_path;
+  options.use_ros_package_path = c.use_ros_package_path;
   robot_model m = load_robot_model(c.urdf_path, options);
   assign_servo_joints(m, c);
   check_joint_servos(m, c);

@@ -70,6 +70,8 @@ struct robot_config {
   /// Folders searched for package://NAME/... file names in the URDF, before ROS_PACKAGE_PATH:
   /// each the package folder itself (last component NAME) or a folder holding NAME/.
   std::vector<std::string> package_path;
+  /// Also search ROS_PACKAGE_PATH (off for a packaged FMU: it finds its files in its resources).
+  bool use_ros_package_path = true;
   /// Force (N·m, N for prismatic joints) a <mimic> joint's motor may use to follow its master:
   /// generous, so the follower never gives way before the master's servo does.
   double mimic_force_limit = 1000.0;
