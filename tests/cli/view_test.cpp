@@ -136,14 +136,15 @@ TEST_F(view_cli, the_model_is_the_urdf_the_run_used_or_the_one_named) {
   r = stride("view plain");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("robot robot.fmu:resources/darwin-op.urdf"));
-  // --urdf draws another file, read as the plant reads it: a mesh is refused, naming the link
+  // --urdf draws another file, read as the plant reads it: a missing mesh file is refused,
+  // naming the link and the file
   std::ofstream(out("mesh.urdf"))
       << "<robot name='m'><link name='base'><inertial><mass value='1'/><inertia ixx='1' "
          "iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/></inertial><collision><geometry><mesh "
          "filename='base.stl'/></geometry></collision></link></robot>";
   r = stride("view plain --urdf mesh.urdf -o mesh.html");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_THAT(r.err, HasSubstr("link 'base': mesh collision geometry is not supported"));
+  EXPECT_THAT(r.err, HasSubstr("link 'base' collision mesh: mesh file 'base.stl' cannot be read"));
 }
 
 TEST_F(view_cli, several_robots_show_the_first_or_the_one_named) {

@@ -182,6 +182,7 @@ TEST(robot_sim, the_configured_package_path_finds_meshes) {
   c.package_path.clear();
   ::setenv("ROS_PACKAGE_PATH", "", 1);  // nothing from the environment of the test run
   EXPECT_THROW(robot_sim{c}, stride::robot::model_error);
+  ::unsetenv("ROS_PACKAGE_PATH");
   std::filesystem::remove(urdf);
 }
 
