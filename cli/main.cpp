@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "installed_files.hpp"
 #include "plot.hpp"
+#include "robot_fmu.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/run.hpp"
@@ -16,7 +17,6 @@
 #include "stride/study/suite_assertions.hpp"
 #include "stride/suite/assertions.hpp"
 #include "sweep.hpp"
-#include "robot_fmu.hpp"
 #include "view.hpp"
 #include "workers.hpp"
 

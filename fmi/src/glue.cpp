@@ -3,10 +3,10 @@
 // component's variable table or to its model. Nothing here knows any particular component.
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <exception>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -286,7 +286,9 @@ fmi2Status unsupported(fmi2Component c, function f, const char* name, const char
 
 instance::instance(const loaded_fmu& definition, std::string name, std::string resource_dir,
                    const fmi2CallbackFunctions& callbacks)
-    : loaded(definition), fmu(*definition.fmu), log(callbacks.logger, callbacks.componentEnvironment, name) {
+    : loaded(definition),
+      fmu(*definition.fmu),
+      log(callbacks.logger, callbacks.componentEnvironment, name) {
   context.instance_name = std::move(name);
   context.resource_dir = std::move(resource_dir);
   context.log = &log;

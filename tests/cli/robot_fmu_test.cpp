@@ -66,8 +66,8 @@ class robot_fmu_cli : public ::testing::Test {
   void plant_system(const std::string& name, const std::string& fmu, const std::string& stop,
                     const std::string& body) const {
     write(name, "<system name=\"plant\" version=\"1\">\n<simulation start=\"0\" stop=\"" + stop +
-                    "\" step=\"0.002\"/>\n<component name=\"robot\" fmu=\"" +
-                    out(fmu).string() + "\"/>\n" + body + "</system>\n");
+                    "\" step=\"0.002\"/>\n<component name=\"robot\" fmu=\"" + out(fmu).string() +
+                    "\"/>\n" + body + "</system>\n");
   }
 };
 
@@ -82,9 +82,9 @@ TEST_F(robot_fmu_cli, help_documents_the_options) {
 
 // the reference was recorded with robot.fmu as it was before it was generated from the profile
 TEST_F(robot_fmu_cli, the_darwin_fmu_made_by_the_command_walks_exactly_as_before) {
-  const auto made = stride("robot-fmu " + quoted(k_darwin / "darwin-op.urdf") + " --profile " +
-                           quoted(k_darwin / "darwin-op.profile.xml") +
-                           " --name robot --output made/robot.fmu");
+  const auto made =
+      stride("robot-fmu " + quoted(k_darwin / "darwin-op.urdf") + " --profile " +
+             quoted(k_darwin / "darwin-op.profile.xml") + " --name robot --output made/robot.fmu");
   ASSERT_EQ(made.exit_code, 0) << made.err;
   EXPECT_THAT(made.out, HasSubstr("20 joints"));
   EXPECT_EQ(made.err, "") << "the DARwIn profile leaves nothing to guess";
@@ -127,10 +127,14 @@ TEST_F(robot_fmu_cli, without_a_profile_every_guess_is_reported) {
 // a compound pendulum released from 5°: its servo has no torque, so it swings freely
 TEST_F(robot_fmu_cli, a_released_pendulum_swings_with_the_analytic_period) {
   const double theta0 = 5.0 * std::numbers::pi / 180.0;
-  write("pendulum.xml", "<plant_profile>\n<physics step=\"0.0005\"/>\n"
-                        "<servo joints=\"pivot\" torque_limit=\"0\" static_friction=\"0\" "
-                        "damping=\"0\"/>\n<pose joints=\"pivot\" value=\"" +
-                            std::to_string(theta0) + "\"/>\n</plant_profile>\n");
+  std::ostringstream pose;
+  pose.precision(17);
+  pose << theta0;
+  write("pendulum.xml",
+        "<plant_profile>\n<physics step=\"0.0005\"/>\n"
+        "<servo joints=\"pivot\" torque_limit=\"0\" static_friction=\"0\" "
+        "damping=\"0\"/>\n<pose joints=\"pivot\" value=\"" +
+            pose.str() + "\"/>\n</plant_profile>\n");
   const auto made = stride("robot-fmu " + quoted(k_data / "pendulum.urdf") +
                            " --profile pendulum.xml --quiet -o pendulum.fmu");
   ASSERT_EQ(made.exit_code, 0) << made.err;
@@ -160,6 +164,76 @@ TEST_F(robot_fmu_cli, a_released_pendulum_swings_with_the_analytic_period) {
   const double small = 2.0 * std::numbers::pi * std::sqrt(inertia / (mass * 9.81 * d));
   const double analytic = small * (1.0 + theta0 * theta0 / 16.0);
   EXPECT_NEAR(measured / analytic, 1.0, 0.01) << measured << " s against " << analytic << " s";
+}
+
+// data/quadruped.urdf (6.2 kg: a 4 kg body, four legs of 0.55 kg) on bent knees, P servos
+TEST_F(robot_fmu_cli, a_quadruped_stands_under_gravity_with_p_servos) {
+  const auto made = stride("robot-fmu " + quoted(k_data / "quadruped.urdf") + " --profile " +
+                           quoted(k_data / "quadruped.profile.xml") + " -o quadruped.fmu");
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  EXPECT_EQ(made.err, "");
+  EXPECT_THAT(made.out, HasSubstr("8 joints"));
+  plant_system("stand.xml", "quadruped.fmu", "5",
+               "<record interval=\"0.1\" file=\"results.csv\">"
+               "<signal name=\"robot.base_z\"/><signal name=\"robot.roll\"/>"
+               "<signal name=\"robot.pitch\"/><signal name=\"robot.fallen\"/>"
+               "<signal name=\"robot.*_force\"/><signal name=\"robot.*_knee.angle\"/>"
+               "</record>\n");
+  const auto run = stride("run stand.xml --quiet -o stand");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto c = columns(out("stand") / "results.csv");
+  const std::size_t at_2s = 20, last = c.at("time").size() - 1;
+  ASSERT_EQ(c.at("time")[last], 5.0);
+  EXPECT_NEAR(c.at("robot.base_z")[last], c.at("robot.base_z")[at_2s], 0.002);
+  EXPECT_GT(c.at("robot.base_z")[last], 0.2);  // standing, not lying on its body
+  for (std::size_t i = at_2s; i <= last; ++i) {
+    EXPECT_LT(std::abs(c.at("robot.roll")[i]), 0.02);
+    EXPECT_LT(std::abs(c.at("robot.pitch")[i]), 0.02);
+    EXPECT_EQ(c.at("robot.fallen")[i], 0.0);
+  }
+  // the last second: the feet carry the weight, the knees hold their target
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = last - 10; i <= last; ++i, ++n) {
+    for (const char* foot : {"fl", "fr", "hl", "hr"}) {
+      sum += c.at("robot." + std::string(foot) + "_force")[i];
+    }
+    for (const char* knee : {"fl", "fr", "hl", "hr"}) {
+      EXPECT_NEAR(c.at("robot." + std::string(knee) + "_knee.angle")[i], -1.0, 0.01);
+    }
+  }
+  EXPECT_NEAR(sum / n / (6.2 * 9.81), 1.0, 0.01);
+}
+
+// a mesh named relative to the URDF and the same mesh as package://: both travel in the FMU
+TEST_F(robot_fmu_cli, mesh_files_travel_inside_the_fmu) {
+  const auto relative = stride("robot-fmu " + quoted(k_data / "mesh_box.urdf") + " -q -o rel.fmu");
+  ASSERT_EQ(relative.exit_code, 0) << relative.err;
+  fs::create_directories(out("pkgs/boxes/meshes"));
+  fs::copy_file(k_data / "unit_cube.stl", out("pkgs/boxes/meshes/unit_cube.stl"));
+  std::string urdf = read(k_data / "mesh_box.urdf");
+  urdf.replace(urdf.find("\"unit_cube.stl\""), 15, "\"package://boxes/meshes/unit_cube.stl\"");
+  write("crate.urdf", urdf);
+  const auto packaged = stride("robot-fmu crate.urdf --package-path pkgs -q -o pkg.fmu");
+  ASSERT_EQ(packaged.exit_code, 0) << packaged.err;
+  fs::remove_all(out("pkgs"));  // the FMU must not need them any more
+  for (const char* fmu : {"rel", "pkg"}) {
+    plant_system(std::string(fmu) + ".xml", std::string(fmu) + ".fmu", "1",
+                 "<record interval=\"0.1\" file=\"results.csv\">"
+                 "<signal name=\"robot.base_z\"/></record>\n");
+    const auto run = stride(std::string("run ") + fmu + ".xml --quiet -o run_" + fmu);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  // the crate rests on its mesh: the link origin 0.05 + 0.03 m above the floor
+  const auto c = columns(out("run_rel") / "results.csv");
+  EXPECT_NEAR(c.at("robot.base_z").back(), 0.08, 0.002);
+  EXPECT_TRUE(read(out("run_rel") / "results.csv") == read(out("run_pkg") / "results.csv"));
+
+  urdf.replace(urdf.find("package://boxes"), 15, "/abs/boxes");
+  write("absolute.urdf", urdf);
+  const auto absolute = stride("robot-fmu absolute.urdf -q -o abs.fmu");
+  EXPECT_NE(absolute.exit_code, 0);
+  EXPECT_THAT(absolute.err, HasSubstr("absolute.urdf"));
 }
 
 TEST_F(robot_fmu_cli, bad_input_is_refused_naming_the_file) {

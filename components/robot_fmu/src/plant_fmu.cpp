@@ -31,7 +31,7 @@ struct plant_layout {
   std::size_t explicitly = 0;  // one bool per plant_settings(): set through the FMU
   std::size_t welds = 0;       // one bool per weld group
   std::size_t gyro = 0, acc = 0, base = 0, rpy = 0, com = 0;
-  std::size_t forces = 0;   // one double per contact output
+  std::size_t forces = 0;            // one double per contact output
   std::vector<std::size_t> channel;  // per board channel: a double or an int
   std::size_t max_penetration = 0, fallen = 0, applied_reset = 0;
 };
@@ -67,8 +67,8 @@ std::string limits_text(const model_joint& j) {
 
 double board_value(const board_channel& c, const robot_outputs& o) {
   const int k = static_cast<int>(c.from);
-  const double signal = k < 3 ? o.gyro[static_cast<std::size_t>(k)]
-                              : o.acc[static_cast<std::size_t>(k - 3)];
+  const double signal =
+      k < 3 ? o.gyro[static_cast<std::size_t>(k)] : o.acc[static_cast<std::size_t>(k - 3)];
   return c.gain * signal + c.offset;
 }
 
@@ -142,8 +142,9 @@ sdk::variable_table build_table(plant_spec& s, const resolved_plant& r) {
   }
   t.add<sdk::text>("urdf", sdk::text{}, &at.urdf)
       .parameter()
-      .describe("URDF to load instead of the packaged one (same joints): a path, or a file in "
-                "resources/");
+      .describe(
+          "URDF to load instead of the packaged one (same joints): a path, or a file in "
+          "resources/");
   const std::span<const plant_setting> settings = plant_settings();
   at.settings = t.reserve<double>(settings.size(), 0.0);
   for (std::size_t i = 0; i < settings.size(); ++i) {
@@ -172,6 +173,14 @@ sdk::variable_table build_table(plant_spec& s, const resolved_plant& r) {
   joint_values("joint_angle", "angle", at.angle, "Joint position", false);
   joint_values("joint_velocity", "velocity", at.velocity, "Joint velocity", false);
   joint_values("joint_torque", "torque", at.torque, "Motor torque (force for prismatic)", false);
+  // the board channels before the IMU they are made of (recorded columns keep this order)
+  for (const board_channel& c : s.profile.board) {
+    std::size_t offset = 0;
+    auto v = c.round == board_channel::rounding::none ? t.add<double>(c.name, 0.0, &offset)
+                                                      : t.add<int>(c.name, 0, &offset);
+    v.output().describe(c.description.empty() ? "Board channel" : c.description);
+    at.channel.push_back(offset);
+  }
   at.gyro = t.reserve<double>(3, 0.0);
   t.declare<double>("gyro", at.gyro, 3, true)
       .output()
@@ -211,13 +220,6 @@ sdk::variable_table build_table(plant_spec& s, const resolved_plant& r) {
         .output()
         .unit("N")
         .describe("Normal floor force on link " + s.profile.contact_forces[i].link);
-  }
-  for (const board_channel& c : s.profile.board) {
-    std::size_t offset = 0;
-    auto v = c.round == board_channel::rounding::none ? t.add<double>(c.name, 0.0, &offset)
-                                                      : t.add<int>(c.name, 0, &offset);
-    v.output().describe(c.description.empty() ? "Board channel" : c.description);
-    at.channel.push_back(offset);
   }
   t.add<double>("max_penetration", 0.0, &at.max_penetration)
       .output()
@@ -381,7 +383,7 @@ class plant_model final : public sdk::buffer_model {
 }  // namespace
 
 std::shared_ptr<const sdk::fmu_definition> load_plant_fmu(const std::string& resource_dir,
-                                                         std::vector<std::string>* warnings) {
+                                                          std::vector<std::string>* warnings) {
   namespace fs = std::filesystem;
   const fs::path dir(resource_dir);
   const plant_manifest manifest = read_plant_manifest((dir / k_plant_manifest).string());
@@ -406,8 +408,8 @@ std::shared_ptr<const sdk::fmu_definition> load_plant_fmu(const std::string& res
     info.default_step_size = manifest.default_step;
     sdk::variable_table table = build_table(*spec, r);
     std::shared_ptr<const plant_spec> shared = spec;
-    auto definition = std::make_shared<sdk::fmu_definition>(sdk::fmu_definition{
-        std::move(info), std::move(table), nullptr});
+    auto definition = std::make_shared<sdk::fmu_definition>(
+        sdk::fmu_definition{std::move(info), std::move(table), nullptr});
     const sdk::variable_table* table_ptr = &definition->table;
     definition->create = [shared, table_ptr](const sdk::instance_context& context) {
       return std::unique_ptr<sdk::model>(new plant_model(shared, *table_ptr, context));

@@ -2,6 +2,7 @@
 // code the FMU binary runs, and zip it all with the binaries of a built plant FMU.
 #include "stride/robot/plant_package.hpp"
 
+#include <tinyxml2.h>
 #include <zip.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <stdexcept>
 
 #include "stride/robot/plant_fmu.hpp"
+#include "stride/robot/resource_path.hpp"
 #include "stride/robot/robot_model.hpp"
 #include "stride/sdk/model_description.hpp"
 
@@ -89,7 +91,8 @@ class zip_writer {
                : -1;
     if (index < 0) {
       if (source) zip_source_free(source);
-      throw std::runtime_error(path_ + ": cannot add " + name + " (" + zip_strerror(archive_) + ")");
+      throw std::runtime_error(path_ + ": cannot add " + name + " (" + zip_strerror(archive_) +
+                               ")");
     }
     const auto i = static_cast<zip_uint64_t>(index);
     // a fixed time and mode: the same inputs give the same archive
@@ -149,8 +152,9 @@ std::vector<std::pair<std::string, std::string>> plant_binaries(const std::strin
   }
   std::sort(files.begin(), files.end());
   if (own.empty() || files.empty()) {
-    throw std::runtime_error(fmu + ": not a plant FMU with binaries (no modelIdentifier or no "
-                                   "binaries/)");
+    throw std::runtime_error(fmu +
+                             ": not a plant FMU with binaries (no modelIdentifier or no "
+                             "binaries/)");
   }
   for (auto& [name, content] : files) {
     const fs::path p(name);
@@ -160,6 +164,53 @@ std::vector<std::pair<std::string, std::string>> plant_binaries(const std::strin
     }
   }
   return files;
+}
+
+// Folder of resources/ for the files named package://NAME/...; the FMU searches it for them.
+constexpr const char* k_packages = "packages";
+
+// Copies every file the URDF's collisions name into `resources` where the packaged URDF finds
+// it: package://NAME/REST under packages/NAME/REST, a relative name at the same relative place.
+// Returns whether any package:// name was copied.
+bool stage_urdf_files(const plant_fmu_request& r, const fs::path& resources) {
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(r.urdf.c_str()) != tinyxml2::XML_SUCCESS) {
+    throw std::runtime_error(r.urdf + ": cannot read as XML (" + doc.ErrorStr() + ")");
+  }
+  const std::string base = fs::path(r.urdf).parent_path().string();
+  const char* ros = std::getenv("ROS_PACKAGE_PATH");
+  const std::vector<std::string> search = package_search_path(r.package_path, ros);
+  bool packages = false;
+  const tinyxml2::XMLElement* robot = doc.RootElement();
+  for (const auto* link = robot ? robot->FirstChildElement("link") : nullptr; link;
+       link = link->NextSiblingElement("link")) {
+    for (const auto* c = link->FirstChildElement("collision"); c;
+         c = c->NextSiblingElement("collision")) {
+      const auto* g = c->FirstChildElement("geometry");
+      const auto* mesh = g ? g->FirstChildElement("mesh") : nullptr;
+      const char* name = mesh ? mesh->Attribute("filename") : nullptr;
+      if (name == nullptr) continue;
+      const std::string uri = name;
+      const std::string from = resolve_resource(uri, base, search);
+      fs::path to;
+      if (uri.starts_with("package://")) {
+        to = fs::path(k_packages) / uri.substr(10);
+        packages = true;
+      } else {
+        to = fs::path(uri.starts_with("file://") ? uri.substr(7) : uri).lexically_normal();
+        if (to.is_absolute() || to.empty() || *to.begin() == "..") {
+          throw std::runtime_error(r.urdf + ": link '" +
+                                   (link->Attribute("name") ? link->Attribute("name") : "") +
+                                   "': mesh '" + uri +
+                                   "' cannot travel in an FMU: name it relative to the URDF's "
+                                   "folder (inside it) or as package://");
+        }
+      }
+      fs::create_directories((resources / to).parent_path());
+      write_file(resources / to, read_file(from));
+    }
+  }
+  return packages;
 }
 
 }  // namespace
@@ -188,8 +239,11 @@ plant_fmu_result write_plant_fmu(const plant_fmu_request& r) {
   const fs::path resources = staging.path() / "resources";
   fs::create_directories(resources);
   // the URDF must load where it is (its relative paths) before it is staged
-  (void)load_robot_model(r.urdf);
+  model_options options;
+  options.package_path = r.package_path;
+  (void)load_robot_model(r.urdf, options);
   write_file(resources / manifest.urdf, read_file(urdf));
+  if (stage_urdf_files(r, resources)) manifest.package_path.push_back(k_packages);
   if (!r.profile.empty()) {
     manifest.profile = fs::path(r.profile).filename().string();
     if (manifest.profile == manifest.urdf || manifest.profile == k_plant_manifest) {
@@ -206,8 +260,8 @@ plant_fmu_result write_plant_fmu(const plant_fmu_request& r) {
   for (const sdk::variable& v : fmu->table.variables()) {
     if (v.name.starts_with("joint_target[")) ++result.joints;
   }
-  const std::string description = sdk::write_model_description(
-      *fmu, r.generation_time.empty() ? utc_now() : r.generation_time);
+  const std::string description =
+      sdk::write_model_description(*fmu, r.generation_time.empty() ? utc_now() : r.generation_time);
 
   const auto binaries = plant_binaries(r.binaries_from, manifest.model_identifier);
   if (!output.parent_path().empty()) fs::create_directories(output.parent_path());
@@ -217,9 +271,13 @@ plant_fmu_result write_plant_fmu(const plant_fmu_request& r) {
     zip.add("modelDescription.xml", description);
     for (const auto& [entry, content] : binaries) zip.add(entry, content, true);
     std::vector<fs::path> staged;  // sorted: the same inputs give the same archive
-    for (const auto& f : fs::directory_iterator(resources)) staged.push_back(f.path());
+    for (const auto& f : fs::recursive_directory_iterator(resources)) {
+      if (f.is_regular_file()) staged.push_back(f.path().lexically_relative(resources));
+    }
     std::sort(staged.begin(), staged.end());
-    for (const fs::path& f : staged) zip.add("resources/" + f.filename().string(), read_file(f));
+    for (const fs::path& f : staged) {
+      zip.add("resources/" + f.generic_string(), read_file(resources / f));
+    }
     zip.close();
   }
   fs::rename(partial, output);

@@ -69,8 +69,8 @@ class reader {
   explicit reader(std::string source) : source_(std::move(source)) {}
 
   [[noreturn]] void fail(const tinyxml2::XMLElement* e, const std::string& what) const {
-    throw model_error(source_ + (e ? ":" + std::to_string(e->GetLineNum()) : std::string()) +
-                      ": " + what);
+    throw model_error(source_ + (e ? ":" + std::to_string(e->GetLineNum()) : std::string()) + ": " +
+                      what);
   }
 
   // every attribute of `e` must be in `known`
@@ -155,11 +155,13 @@ class reader {
     r.line = e.GetLineNum();
     r.patterns = patterns(e, "joints");
     servo_config& v = r.values;
-    const std::pair<const char*, double*> fields[] = {
-        {"p_gain", &v.p_gain},           {"max_velocity", &v.max_velocity},
-        {"max_acceleration", &v.max_acceleration}, {"torque_limit", &v.torque_limit},
-        {"damping", &v.damping},         {"static_friction", &v.static_friction},
-        {"compliance", &v.compliance}};
+    const std::pair<const char*, double*> fields[] = {{"p_gain", &v.p_gain},
+                                                      {"max_velocity", &v.max_velocity},
+                                                      {"max_acceleration", &v.max_acceleration},
+                                                      {"torque_limit", &v.torque_limit},
+                                                      {"damping", &v.damping},
+                                                      {"static_friction", &v.static_friction},
+                                                      {"compliance", &v.compliance}};
     for (auto [name, field] : fields) {
       *field = e.Attribute(name) ? number(e, name) : k_unset;
       if (*field < 0) fail(&e, "<servo " + std::string(name) + ">: must not be negative");
@@ -196,8 +198,9 @@ class reader {
     std::size_t i = 0;
     while (i < std::size(signals) && signal != signals[i]) ++i;
     if (i == std::size(signals)) {
-      fail(&e, "<board signal=\"" + signal + "\">: not one of gyro_x, gyro_y, gyro_z, acc_x, "
-                                             "acc_y, acc_z");
+      fail(&e, "<board signal=\"" + signal +
+                   "\">: not one of gyro_x, gyro_y, gyro_z, acc_x, "
+                   "acc_y, acc_z");
     }
     c.from = static_cast<board_channel::source>(i);
     if (e.Attribute("gain")) c.gain = number(e, "gain");
@@ -251,7 +254,8 @@ class reader {
         if (e->Attribute("passive")) p.passive = patterns(*e, "passive");
       } else if (element == "pose") {
         only(*e, {"joints", "value"});
-        for (const std::string& j : patterns(*e, "joints")) p.pose.emplace_back(j, number(*e, "value"));
+        for (const std::string& j : patterns(*e, "joints"))
+          p.pose.emplace_back(j, number(*e, "value"));
       } else if (element == "weld") {
         only(*e, {"joints", "parameter", "description"});
         weld_group w{patterns(*e, "joints"), text(*e, "parameter", false),
@@ -282,8 +286,8 @@ class reader {
         for (const tinyxml2::XMLElement* pe = e->FirstChildElement(); pe;
              pe = pe->NextSiblingElement()) {
           if (std::string(pe->Name()) != "preset") {
-            fail(pe, "<presets> holds only <preset> elements, not <" + std::string(pe->Name()) +
-                         ">");
+            fail(pe,
+                 "<presets> holds only <preset> elements, not <" + std::string(pe->Name()) + ">");
           }
           only(*pe, {"name"});
           profile_preset preset{text(*pe, "name", true), empty_layer()};
@@ -293,8 +297,10 @@ class reader {
           for (const tinyxml2::XMLElement* c = pe->FirstChildElement(); c;
                c = c->NextSiblingElement()) {
             if (!layer_element(*c, preset.layer)) {
-              fail(c, "<preset> may hold <physics>, <contact>, <fall>, <reset> and <servo>, "
-                      "not <" + std::string(c->Name()) + ">");
+              fail(c,
+                   "<preset> may hold <physics>, <contact>, <fall>, <reset> and <servo>, "
+                   "not <" +
+                       std::string(c->Name()) + ">");
             }
           }
           p.presets.push_back(std::move(preset));

@@ -21,14 +21,13 @@ bool matches_any(const std::vector<std::string>& patterns, const std::string& na
 
 // fills the attributes `rule` sets
 void apply_rule(const servo_rule& rule, servo_config& s) {
-  const std::pair<double, double*> fields[] = {
-      {rule.values.p_gain, &s.p_gain},
-      {rule.values.max_velocity, &s.max_velocity},
-      {rule.values.max_acceleration, &s.max_acceleration},
-      {rule.values.torque_limit, &s.torque_limit},
-      {rule.values.damping, &s.damping},
-      {rule.values.static_friction, &s.static_friction},
-      {rule.values.compliance, &s.compliance}};
+  const std::pair<double, double*> fields[] = {{rule.values.p_gain, &s.p_gain},
+                                               {rule.values.max_velocity, &s.max_velocity},
+                                               {rule.values.max_acceleration, &s.max_acceleration},
+                                               {rule.values.torque_limit, &s.torque_limit},
+                                               {rule.values.damping, &s.damping},
+                                               {rule.values.static_friction, &s.static_friction},
+                                               {rule.values.compliance, &s.compliance}};
   for (auto [value, field] : fields) {
     if (!std::isnan(value)) *field = value;
   }
@@ -63,8 +62,9 @@ std::vector<int> actuated_joints(const plant_profile& p, const robot_model& m) {
   if (p.joint_order == "servo_id") {
     for (int j : out) {
       if (m.joints[static_cast<std::size_t>(j)].servo_id == 0) {
-        fail(p, "<joints order=\"servo_id\">: joint '" + m.joints[static_cast<std::size_t>(j)].name +
-                    "' has no <servo id> in " + m.source + " (mark it passive or order by urdf)");
+        fail(p, "<joints order=\"servo_id\">: joint '" +
+                    m.joints[static_cast<std::size_t>(j)].name + "' has no <servo id> in " +
+                    m.source + " (mark it passive or order by urdf)");
       }
     }
     std::sort(out.begin(), out.end(), [&](int a, int b) {
@@ -73,8 +73,8 @@ std::vector<int> actuated_joints(const plant_profile& p, const robot_model& m) {
     });
     for (std::size_t i = 0; i < out.size(); ++i) {
       if (m.joints[static_cast<std::size_t>(out[i])].servo_id != static_cast<int>(i) + 1) {
-        fail(p, "<joints order=\"servo_id\">: the servo IDs of " + m.source +
-                    " must number 1.." + std::to_string(out.size()));
+        fail(p, "<joints order=\"servo_id\">: the servo IDs of " + m.source + " must number 1.." +
+                    std::to_string(out.size()));
       }
     }
   }
@@ -136,8 +136,9 @@ resolved_plant resolve_plant(const plant_profile& p, const robot_model& m, std::
   }
   if (!any_rule && !r.actuated.empty()) {
     std::ostringstream w;
-    w << "no <servo> rule: every servo joint guessed as Webots' position servo (P " << defaults.p_gain
-      << " 1/s, " << defaults.max_velocity << " rad/s, " << defaults.torque_limit << " N.m)";
+    w << "no <servo> rule: every servo joint guessed as Webots' position servo (P "
+      << defaults.p_gain << " 1/s, " << defaults.max_velocity << " rad/s, " << defaults.torque_limit
+      << " N.m)";
     r.warnings.push_back(w.str());
   }
   // explicitly set FMU parameters win, for every servo
@@ -159,9 +160,9 @@ resolved_plant resolve_plant(const plant_profile& p, const robot_model& m, std::
   }
   if (!per_joint.empty()) {
     c.servo = per_joint.front();
-    const bool uniform = std::all_of(per_joint.begin(), per_joint.end(), [&](const servo_config& s) {
-      return same_servo(s, per_joint.front());
-    });
+    const bool uniform =
+        std::all_of(per_joint.begin(), per_joint.end(),
+                    [&](const servo_config& s) { return same_servo(s, per_joint.front()); });
     if (!uniform) {
       for (std::size_t k = 0; k < per_joint.size(); ++k) {
         c.joint_servos.emplace_back(c.servo_joints[k], per_joint[k]);

@@ -84,7 +84,8 @@ TEST(resolve_plant, later_servo_rules_and_the_preset_win_per_attribute) {
   // an explicitly set servo setting applies to every servo
   std::vector<double> overrides(plant_settings().size(), std::nan(""));
   for (std::size_t i = 0; i < overrides.size(); ++i) {
-    if (std::string_view(plant_settings()[i].profile_name) == "servo.torque_limit") overrides[i] = 1;
+    if (std::string_view(plant_settings()[i].profile_name) == "servo.torque_limit")
+      overrides[i] = 1;
   }
   const resolved_plant o = resolve_plant(p, model, "", overrides);
   for (const auto& [joint, servo] : o.config.joint_servos) EXPECT_EQ(servo.torque_limit, 1.0);
@@ -92,9 +93,8 @@ TEST(resolve_plant, later_servo_rules_and_the_preset_win_per_attribute) {
 
 TEST(resolve_plant, passive_joints_are_left_out_of_the_urdf_order) {
   const robot_model model = load_robot_model(k_darwin_dir + "darwin-op.urdf");
-  const plant_profile p =
-      parse_plant_profile(R"(<plant_profile><joints passive="head_* *_el"/></plant_profile>)",
-                          "p.xml");
+  const plant_profile p = parse_plant_profile(
+      R"(<plant_profile><joints passive="head_* *_el"/></plant_profile>)", "p.xml");
   const resolved_plant r = resolve_plant(p, model, "");
   ASSERT_EQ(r.config.servo_joints.size(), 16u);
   std::size_t k = 0;
@@ -108,11 +108,14 @@ TEST(resolve_plant, a_profile_that_does_not_fit_the_model_is_refused) {
   const robot_model model = load_robot_model(k_darwin_dir + "darwin-op.urdf");
   const std::pair<const char*, const char*> cases[] = {
       {"<joints passive=\"wheel\"/>", "<joints passive>: 'wheel' matches no joint"},
-      {"<servo joints=\"wheel_*\" p_gain=\"1\"/>", "<servo joints> 'wheel_*' matches no servo joint"},
-      {"<pose joints=\"r_knee\" value=\"9\"/>", "initial pose of joint 'r_knee' (9.000000) is outside its URDF limits"},
+      {"<servo joints=\"wheel_*\" p_gain=\"1\"/>",
+       "<servo joints> 'wheel_*' matches no servo joint"},
+      {"<pose joints=\"r_knee\" value=\"9\"/>",
+       "initial pose of joint 'r_knee' (9.000000) is outside its URDF limits"},
       {"<weld joints=\"tail\"/>", "<weld joints> 'tail' matches no servo joint"},
       {"<imu link=\"nose\"/>", "<imu>: the model has no link 'nose'"},
-      {"<feet left=\"l_ank_roll_link\" right=\"r_toe\"/>", "<feet right>: the model has no link 'r_toe'"},
+      {"<feet left=\"l_ank_roll_link\" right=\"r_toe\"/>",
+       "<feet right>: the model has no link 'r_toe'"},
       {"<contact_force name=\"f\" link=\"hand\"/>", "the model has no link 'hand'"},
   };
   for (const auto& [element, expected] : cases) {

@@ -56,8 +56,7 @@ std::shared_ptr<const sdk::fmu_definition> load(const std::string& resource_dir)
 }
 
 std::vector<std::string> g_messages;
-void logger(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String, fmi2String message,
-            ...) {
+void logger(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String, fmi2String message, ...) {
   g_messages.emplace_back(message);
 }
 const fmi2CallbackFunctions k_callbacks{logger, nullptr, nullptr, nullptr, nullptr};
@@ -85,8 +84,8 @@ TEST(resource_fmu, each_resources_folder_gives_its_own_interface_and_guid) {
   EXPECT_NE(guid2, guid3);
 
   // through the FMI functions: the GUID of the folder's interface is the one accepted
-  EXPECT_EQ(fmi2Instantiate("a", fmi2CoSimulation, guid2.c_str(), uri(three).c_str(),
-                            &k_callbacks, fmi2False, fmi2False),
+  EXPECT_EQ(fmi2Instantiate("a", fmi2CoSimulation, guid2.c_str(), uri(three).c_str(), &k_callbacks,
+                            fmi2False, fmi2False),
             nullptr);
   fmi2Component c = fmi2Instantiate("b", fmi2CoSimulation, guid3.c_str(), uri(three).c_str(),
                                     &k_callbacks, fmi2False, fmi2False);

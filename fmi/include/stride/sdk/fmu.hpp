@@ -43,23 +43,23 @@ std::shared_ptr<const fmu_definition> fmu_for(const std::string& resource_dir);
 
 }  // namespace stride::sdk
 
-#define STRIDE_FMU(model_type)                                                   \
-  const ::stride::sdk::fmu_definition& ::stride::sdk::detail::registered_fmu() { \
-    static const ::stride::sdk::fmu_definition definition{                       \
-        model_type::info(), model_type::variables(),                             \
-        [](const ::stride::sdk::instance_context& context)                       \
-            -> std::unique_ptr<::stride::sdk::model> {                           \
-          return std::make_unique<model_type>(context);                          \
-        }};                                                                      \
-    return definition;                                                           \
-  }                                                                              \
-  std::shared_ptr<const ::stride::sdk::fmu_definition>                          \
-  stride::sdk::detail::fmu_for(const std::string&) {                             \
-    return {std::shared_ptr<void>(), &registered_fmu()};                         \
+#define STRIDE_FMU(model_type)                                                       \
+  const ::stride::sdk::fmu_definition& ::stride::sdk::detail::registered_fmu() {     \
+    static const ::stride::sdk::fmu_definition definition{                           \
+        model_type::info(), model_type::variables(),                                 \
+        [](const ::stride::sdk::instance_context& context)                           \
+            -> std::unique_ptr<::stride::sdk::model> {                               \
+          return std::make_unique<model_type>(context);                              \
+        }};                                                                          \
+    return definition;                                                               \
+  }                                                                                  \
+  std::shared_ptr<const ::stride::sdk::fmu_definition> stride::sdk::detail::fmu_for( \
+      const std::string&) {                                                          \
+    return {std::shared_ptr<void>(), &registered_fmu()};                             \
   }
 
-#define STRIDE_FMU_FROM_RESOURCES(loader)                                  \
-  std::shared_ptr<const ::stride::sdk::fmu_definition>                    \
-  stride::sdk::detail::fmu_for(const std::string& resource_dir) {          \
-    return loader(resource_dir);                                           \
+#define STRIDE_FMU_FROM_RESOURCES(loader)                                            \
+  std::shared_ptr<const ::stride::sdk::fmu_definition> stride::sdk::detail::fmu_for( \
+      const std::string& resource_dir) {                                             \
+    return loader(resource_dir);                                                     \
   }

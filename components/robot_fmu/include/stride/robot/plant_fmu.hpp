@@ -31,8 +31,7 @@ plant_manifest read_plant_manifest(const std::string& path);
 
 /// The FMU definition of the plant whose resources are in `resource_dir`; warnings (defaults
 /// the profile had to guess) go to `warnings` when given.
-std::shared_ptr<const sdk::fmu_definition> load_plant_fmu(const std::string& resource_dir,
-                                                         std::vector<std::string>* warnings =
-                                                             nullptr);
+std::shared_ptr<const sdk::fmu_definition> load_plant_fmu(
+    const std::string& resource_dir, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace stride::robot

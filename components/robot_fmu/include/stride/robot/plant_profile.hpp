@@ -102,10 +102,10 @@ plant_profile default_plant_profile();
 
 /// The profile applied to a model.
 struct resolved_plant {
-  robot_config config;                       ///< without urdf_path
-  std::vector<int> actuated;                 ///< model joint indices, in array order
-  std::vector<std::vector<int>> weld_joints; ///< per weld group: the servo IDs it welds
-  std::vector<std::string> warnings;         ///< defaults that had to be guessed
+  robot_config config;                        ///< without urdf_path
+  std::vector<int> actuated;                  ///< model joint indices, in array order
+  std::vector<std::vector<int>> weld_joints;  ///< per weld group: the servo IDs it welds
+  std::vector<std::string> warnings;          ///< defaults that had to be guessed
 };
 
 /// Resolves `profile` for `model` with preset `preset` ("" = the default), the explicitly set
