@@ -85,7 +85,25 @@ class zip_writer {
   void add(const std::string& name, std::string content, bool executable = false) {
     contents_.push_back(std::make_unique<std::string>(std::move(content)));
     const std::string& data = *contents_.back();
-    zip_source_t* source = zip_source_buffer(archive_, data.data(), data.size(), 0);
+    add_source(name, zip_source_buffer(archive_, data.data(), data.size(), 0), executable);
+  }
+
+  /// Entry `index` of the open archive `from`, copied as it is compressed there (`from` must stay
+  /// open until close()).
+  void add_copy(const std::string& name, zip_t* from, zip_uint64_t index, bool executable) {
+    add_source(name, zip_source_zip(archive_, from, index, ZIP_FL_COMPRESSED, 0, -1), executable);
+  }
+
+  void close() {
+    if (zip_close(archive_) != 0) {
+      const std::string why = zip_strerror(archive_);
+      throw std::runtime_error(path_ + ": cannot write the archive (" + why + ")");
+    }
+    archive_ = nullptr;
+  }
+
+ private:
+  void add_source(const std::string& name, zip_source_t* source, bool executable) {
     const zip_int64_t index =
         source ? zip_file_add(archive_, name.c_str(), source, ZIP_FL_OVERWRITE | ZIP_FL_ENC_UTF_8)
                : -1;
@@ -101,70 +119,73 @@ class zip_writer {
     zip_file_set_external_attributes(archive_, i, 0, ZIP_OPSYS_UNIX, mode << 16);
   }
 
-  void close() {
-    if (zip_close(archive_) != 0) {
-      const std::string why = zip_strerror(archive_);
-      throw std::runtime_error(path_ + ": cannot write the archive (" + why + ")");
-    }
-    archive_ = nullptr;
-  }
-
- private:
   std::string path_;
   zip_t* archive_ = nullptr;
   std::vector<std::unique_ptr<std::string>> contents_;
 };
 
-// binaries/<platform>/* of a built plant FMU, the model's library renamed to `identifier`
-std::vector<std::pair<std::string, std::string>> plant_binaries(const std::string& fmu,
-                                                                const std::string& identifier) {
-  int error = 0;
-  zip_t* archive = zip_open(fmu.c_str(), ZIP_RDONLY, &error);
-  if (archive == nullptr) {
-    throw std::runtime_error(fmu + ": cannot open the plant FMU whose binaries are packaged");
-  }
-  std::unique_ptr<zip_t, int (*)(zip_t*)> closer(archive, zip_close);
-  // the template's own identifier names its library
-  std::string own;
-  std::vector<std::pair<std::string, std::string>> files;
-  const zip_int64_t n = zip_get_num_entries(archive, 0);
-  for (zip_int64_t i = 0; i < n; ++i) {
-    const auto index = static_cast<zip_uint64_t>(i);
-    const std::string name = zip_get_name(archive, index, 0);
-    const bool binary = name.starts_with("binaries/") && name.back() != '/';
-    if (!binary && name != "modelDescription.xml") continue;
-    zip_stat_t st;
-    zip_stat_index(archive, index, 0, &st);
-    std::string content(static_cast<std::size_t>(st.size), '\0');
-    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> f(zip_fopen_index(archive, index, 0),
-                                                        zip_fclose);
-    if (!f || zip_fread(f.get(), content.data(), st.size) != static_cast<zip_int64_t>(st.size)) {
-      throw std::runtime_error(fmu + ": cannot read " + name);
+// A built plant FMU, open for its binaries/<platform>/* (the model's library renamed after
+// `identifier`): entries to copy as they are.
+class plant_binaries {
+ public:
+  plant_binaries(const std::string& fmu, const std::string& identifier) {
+    int error = 0;
+    archive_ = zip_open(fmu.c_str(), ZIP_RDONLY, &error);
+    if (archive_ == nullptr) {
+      throw std::runtime_error(fmu + ": cannot open the plant FMU whose binaries are packaged");
     }
-    if (name == "modelDescription.xml") {
-      const auto at = content.find("modelIdentifier=\"");
-      if (at != std::string::npos) {
-        own = content.substr(at + 17, content.find('"', at + 17) - (at + 17));
+    std::string own;  // the template's identifier names its library
+    const zip_int64_t n = zip_get_num_entries(archive_, 0);
+    for (zip_int64_t i = 0; i < n; ++i) {
+      const auto index = static_cast<zip_uint64_t>(i);
+      const std::string name = zip_get_name(archive_, index, 0);
+      if (name == "modelDescription.xml") {
+        own = identifier_in(fmu, index);
+      } else if (name.starts_with("binaries/") && name.back() != '/') {
+        entries_.emplace_back(name, index);
       }
-      continue;
     }
-    files.emplace_back(name, std::move(content));
-  }
-  std::sort(files.begin(), files.end());
-  if (own.empty() || files.empty()) {
-    throw std::runtime_error(fmu +
-                             ": not a plant FMU with binaries (no modelIdentifier or no "
-                             "binaries/)");
-  }
-  for (auto& [name, content] : files) {
-    const fs::path p(name);
-    if (p.filename() == own + ".so" || p.filename() == own + ".dll" ||
-        p.filename() == own + ".dylib") {
-      name = (p.parent_path() / (identifier + p.extension().string())).string();
+    if (own.empty() || entries_.empty()) {
+      zip_discard(archive_);
+      throw std::runtime_error(fmu +
+                               ": not a plant FMU with binaries (no modelIdentifier or no "
+                               "binaries/)");
     }
+    for (auto& [name, index] : entries_) {
+      const fs::path p(name);
+      if (p.stem() == own &&
+          (p.extension() == ".so" || p.extension() == ".dll" || p.extension() == ".dylib")) {
+        name = (p.parent_path() / (identifier + p.extension().string())).generic_string();
+      }
+    }
+    std::sort(entries_.begin(), entries_.end());
   }
-  return files;
-}
+  ~plant_binaries() { zip_discard(archive_); }
+  plant_binaries(const plant_binaries&) = delete;
+  plant_binaries& operator=(const plant_binaries&) = delete;
+
+  void copy_into(zip_writer& zip) const {
+    for (const auto& [name, index] : entries_) zip.add_copy(name, archive_, index, true);
+  }
+
+ private:
+  std::string identifier_in(const std::string& fmu, zip_uint64_t index) const {
+    zip_stat_t st;
+    zip_stat_index(archive_, index, 0, &st);
+    std::string xml(static_cast<std::size_t>(st.size), '\0');
+    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> f(zip_fopen_index(archive_, index, 0),
+                                                        zip_fclose);
+    if (!f || zip_fread(f.get(), xml.data(), st.size) != static_cast<zip_int64_t>(st.size)) {
+      throw std::runtime_error(fmu + ": cannot read modelDescription.xml");
+    }
+    const auto at = xml.find("modelIdentifier=\"");
+    if (at == std::string::npos) return {};
+    return xml.substr(at + 17, xml.find('"', at + 17) - (at + 17));
+  }
+
+  zip_t* archive_ = nullptr;
+  std::vector<std::pair<std::string, zip_uint64_t>> entries_;
+};
 
 // Folder of resources/ for the files named package://NAME/...; the FMU searches it for them.
 constexpr const char* k_packages = "packages";
@@ -263,13 +284,13 @@ plant_fmu_result write_plant_fmu(const plant_fmu_request& r) {
   const std::string description =
       sdk::write_model_description(*fmu, r.generation_time.empty() ? utc_now() : r.generation_time);
 
-  const auto binaries = plant_binaries(r.binaries_from, manifest.model_identifier);
+  const plant_binaries binaries(r.binaries_from, manifest.model_identifier);
   if (!output.parent_path().empty()) fs::create_directories(output.parent_path());
   const fs::path partial = output.string() + ".partial";
   {
     zip_writer zip(partial.string());
     zip.add("modelDescription.xml", description);
-    for (const auto& [entry, content] : binaries) zip.add(entry, content, true);
+    binaries.copy_into(zip);
     std::vector<fs::path> staged;  // sorted: the same inputs give the same archive
     for (const auto& f : fs::recursive_directory_iterator(resources)) {
       if (f.is_regular_file()) staged.push_back(f.path().lexically_relative(resources));

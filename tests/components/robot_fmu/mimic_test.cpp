@@ -21,8 +21,8 @@ const std::string k_data = STRIDE_TEST_DATA_DIR;
 
 // Angle about y of body `b`, read from the plant's state image rather than from the plant's joint
 // code: the image (layout in state_image.cpp) holds each body's quaternion w, x, y, z after a
-// 28-byte header (magic, version and four counts) and 3 position doubles; both arms of mimic_pair.urdf start unrotated and turn
-// about y only, so the angle is 2·atan2(y, w).
+// 28-byte header (magic, version and four counts) and 3 position doubles; both arms of
+// mimic_pair.urdf start unrotated and turn about y only, so the angle is 2·atan2(y, w).
 double body_angle_y(const robot_sim& sim, std::size_t b) {
   const std::vector<std::uint8_t> image = sim.save_state();
   double q[4];
