@@ -91,7 +91,8 @@ TEST_F(robot_fmu_cli, the_darwin_fmu_made_by_the_command_walks_exactly_as_before
   const std::string walk =
       "run " + quoted(k_source / "models" / "walk.xml") +
       " --quiet --stop-time 10 --set robot.profile=webots --record "
-      "'robot.base_*,robot.roll,robot.pitch,robot.yaw,robot.com_*,robot.joint_angle[*],"
+      "'robot.base_x,robot.base_y,robot.base_z,robot.roll,robot.pitch,robot.yaw,robot.com_*,robot."
+      "joint_angle[*],"
       "robot.gyro*,robot.acc*,robot.*_foot_force,robot.max_penetration,robot.fallen' "
       "--record-interval 0.08 -o ";
   const auto generated = stride(walk + "generated", "STRIDE_FMU_PATH=" + quoted(out("made")));

@@ -30,7 +30,7 @@ struct plant_layout {
   std::size_t settings = 0;    // one double per plant_settings()
   std::size_t explicitly = 0;  // one bool per plant_settings(): set through the FMU
   std::size_t welds = 0;       // one bool per weld group
-  std::size_t gyro = 0, acc = 0, base = 0, rpy = 0, com = 0;
+  std::size_t gyro = 0, acc = 0, base = 0, rpy = 0, com = 0, base_v = 0, base_w = 0;
   std::size_t forces = 0;            // one double per contact output
   std::vector<std::size_t> channel;  // per board channel: a double or an int
   std::size_t max_penetration = 0, fallen = 0, applied_reset = 0;
@@ -207,6 +207,20 @@ sdk::variable_table build_table(plant_spec& s, const resolved_plant& r) {
         .unit("rad")
         .describe(std::string("Root link ") + angles[i]);
   }
+  at.base_v = t.reserve<double>(3, 0.0);
+  at.base_w = t.reserve<double>(3, 0.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    t.declare<double>(std::string("base_v") + axes[i], at.base_v + i * sizeof(double))
+        .output()
+        .unit("m/s")
+        .describe(std::string("Root link origin velocity, world ") + axes[i]);
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    t.declare<double>(std::string("base_w") + axes[i], at.base_w + i * sizeof(double))
+        .output()
+        .unit("rad/s")
+        .describe(std::string("Root link angular velocity, world ") + axes[i]);
+  }
   at.com = t.reserve<double>(3, 0.0);
   for (std::size_t i = 0; i < 3; ++i) {
     t.declare<double>(std::string("com_") + axes[i], at.com + i * sizeof(double))
@@ -349,6 +363,8 @@ class plant_model final : public sdk::buffer_model {
       value<double>(at.acc + i * sizeof(double)) = o.acc[i];
       value<double>(at.base + i * sizeof(double)) = o.base_position[i];
       value<double>(at.com + i * sizeof(double)) = o.com[i];
+      value<double>(at.base_v + i * sizeof(double)) = o.base_velocity[i];
+      value<double>(at.base_w + i * sizeof(double)) = o.base_angular_velocity[i];
     }
     value<double>(at.rpy) = o.roll;
     value<double>(at.rpy + sizeof(double)) = o.pitch;

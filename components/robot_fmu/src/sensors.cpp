@@ -51,6 +51,11 @@ void read_sensors(const ode_world& world, const sensor_mounts& m, const imu_conf
   const Eigen::Matrix3d r = body_rotation(world.bodies[0]);
   const Eigen::Vector3d origin = world.root_origin();
   o.base_position = {origin.x(), origin.y(), origin.z()};
+  dVector3 v;
+  dBodyGetPointVel(world.bodies[0], origin.x(), origin.y(), origin.z(), v);
+  o.base_velocity = {v[0], v[1], v[2]};
+  const dReal* omega = dBodyGetAngularVel(world.bodies[0]);
+  o.base_angular_velocity = {omega[0], omega[1], omega[2]};
   o.pitch = std::asin(std::clamp(-r(2, 0), -1.0, 1.0));
   o.roll = std::atan2(r(2, 1), r(2, 2));
   o.yaw = std::atan2(r(1, 0), r(0, 0));

@@ -164,6 +164,11 @@ TEST(sensors, the_base_and_centre_of_mass_fall_freely_until_the_feet_touch) {
     const double drop = k_gravity * dt * dt * n * (n + 1) / 2.0;
     ASSERT_NEAR(start.base_position[2] - o.base_position[2], drop, 1e-9) << n;
     ASSERT_NEAR(start.com[2] - o.com[2], drop, 1e-9) << n;
+    // and the velocity after n steps is g·dt·n, straight down, without any turn
+    ASSERT_NEAR(o.base_velocity[2], -k_gravity * dt * n, 1e-9) << n;
+    ASSERT_NEAR(o.base_velocity[0], 0.0, 1e-9);
+    ASSERT_NEAR(o.base_velocity[1], 0.0, 1e-9);
+    for (double w : o.base_angular_velocity) ASSERT_NEAR(w, 0.0, 1e-9);
     for (int i = 0; i < 2; ++i) {
       ASSERT_NEAR(o.base_position[static_cast<std::size_t>(i)],
                   start.base_position[static_cast<std::size_t>(i)], 1e-9);
@@ -173,6 +178,23 @@ TEST(sensors, the_base_and_centre_of_mass_fall_freely_until_the_feet_touch) {
     ASSERT_NEAR(o.pitch, start.pitch, 1e-9);
     ASSERT_NEAR(o.yaw, start.yaw, 1e-9);
   }
+}
+
+// the pendulum's root link turns about the pivot: its origin (the pivot itself) stays still while
+// the body turns at the joint's rate about y
+TEST(sensors, the_base_velocity_is_that_of_the_root_link_origin) {
+  robot_config c;
+  c.urdf_path = k_data + "/tilted_pendulum.urdf";
+  c.physics_step = 0.001;
+  robot_sim sim(c);
+  sim.step(0.2);
+  const robot_outputs& o = sim.outputs();
+  const double bob_speed = std::abs(o.base_angular_velocity[1]) * 0.5;  // 0.5 m below the pivot
+  ASSERT_GT(bob_speed, 0.02);                                           // it swings
+  // the pivot moves only by the give of ODE's soft constraint (world CFM 1e-5)
+  for (double v : o.base_velocity) EXPECT_LT(std::abs(v), 1e-3 * bob_speed);
+  EXPECT_NEAR(o.base_angular_velocity[0], 0.0, 1e-9);
+  EXPECT_NEAR(o.base_angular_velocity[2], 0.0, 1e-9);
 }
 
 TEST(sensors, a_robot_reset_turned_on_its_hips_reports_the_hand_computed_orientation) {

@@ -38,6 +38,10 @@ struct robot_outputs {
   double roll = 0.0;
   double pitch = 0.0;
   double yaw = 0.0;
+  /// Velocity of the root link origin and angular velocity of the root link, world axes, m/s and
+  /// rad/s.
+  std::array<double, 3> base_velocity{0.0, 0.0, 0.0};
+  std::array<double, 3> base_angular_velocity{0.0, 0.0, 0.0};
   /// Whole-body centre of mass in the world, m.
   std::array<double, 3> com{0.0, 0.0, 0.0};
   /// Total floor force on each foot in world axes during the last physics step, N
