@@ -1,54 +1,32 @@
 // resources/plant.xml of a generated plant FMU: which URDF and profile the binary loads.
 #include <tinyxml2.h>
 
-#include <sstream>
-
 #include "stride/robot/plant_fmu.hpp"
 
 namespace stride::robot {
 
-namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
 std::string write_plant_manifest(const plant_manifest& m) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<stride_plant model_name=\"" << escape(m.model_name) << "\" model_identifier=\""
-      << escape(m.model_identifier) << "\" urdf=\"" << escape(m.urdf) << "\" profile=\""
-      << escape(m.profile) << "\" default_step=\"" << m.default_step << "\">\n";
+  // tinyxml2 writes the escapes
+  tinyxml2::XMLPrinter out;
+  out.PushHeader(false, true);
+  out.OpenElement("stride_plant");
+  out.PushAttribute("model_name", m.model_name.c_str());
+  out.PushAttribute("model_identifier", m.model_identifier.c_str());
+  out.PushAttribute("urdf", m.urdf.c_str());
+  out.PushAttribute("profile", m.profile.c_str());
+  out.PushAttribute("default_step", m.default_step);
   if (!m.description.empty()) {
-    out << "  <description>" << escape(m.description) << "</description>\n";
+    out.OpenElement("description");
+    out.PushText(m.description.c_str());
+    out.CloseElement();
   }
   for (const std::string& p : m.package_path) {
-    out << "  <package_path folder=\"" << escape(p) << "\"/>\n";
+    out.OpenElement("package_path");
+    out.PushAttribute("folder", p.c_str());
+    out.CloseElement();
   }
-  out << "</stride_plant>\n";
-  return out.str();
+  out.CloseElement();
+  return out.CStr();
 }
 
 plant_manifest read_plant_manifest(const std::string& path) {
