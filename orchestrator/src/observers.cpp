@@ -8,29 +8,13 @@
 #include <cstring>
 #include <fstream>
 
+#include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim {
 
 bool glob_match(std::string_view pattern, std::string_view text) noexcept {
-  // iterative matcher with one backtrack point for the last '*'
-  std::size_t p = 0, t = 0, star = std::string_view::npos, mark = 0;
-  while (t < text.size()) {
-    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
-      ++p;
-      ++t;
-    } else if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      mark = t;
-    } else if (star != std::string_view::npos) {
-      p = star + 1;
-      t = ++mark;
-    } else {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*') ++p;
-  return p == pattern.size();
+  return text::glob_match(pattern, text);
 }
 
 std::vector<variable_id> find_variables(const execution& algo, std::string_view pattern) {

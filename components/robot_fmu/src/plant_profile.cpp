@@ -11,6 +11,8 @@
 #include <set>
 #include <sstream>
 
+#include "stride/common/text.hpp"
+
 namespace stride::robot {
 
 namespace {
@@ -352,24 +354,7 @@ plant_profile default_plant_profile() {
 }
 
 bool matches_pattern(std::string_view pattern, std::string_view name) {
-  // iterative glob with backtracking to the last '*'
-  std::size_t p = 0, n = 0, star = std::string_view::npos, mark = 0;
-  while (n < name.size()) {
-    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == name[n])) {
-      ++p;
-      ++n;
-    } else if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      mark = n;
-    } else if (star != std::string_view::npos) {
-      p = star + 1;
-      n = ++mark;
-    } else {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*') ++p;
-  return p == pattern.size();
+  return text::glob_match(pattern, name);
 }
 
 }  // namespace stride::robot

@@ -1,4 +1,5 @@
-// Small text helpers shared by the readers of INI and CSV files (header only).
+// Small text helpers shared by the readers of INI and CSV files and the name patterns of
+// recorders and plant profiles (header only).
 #pragma once
 
 #include <charconv>
@@ -102,6 +103,28 @@ inline std::string format_double(double v) {
   char buf[64];
   const auto res = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, res.ptr);
+}
+
+/// True when `text` matches `pattern`, where `*` matches any run of characters and `?` one.
+inline bool glob_match(std::string_view pattern, std::string_view text) noexcept {
+  // iterative matcher with one backtrack point for the last '*'
+  std::size_t p = 0, t = 0, star = std::string_view::npos, mark = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
+      ++p;
+      ++t;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      mark = t;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      t = ++mark;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
 }
 
 }  // namespace stride::text
