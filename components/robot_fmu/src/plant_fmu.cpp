@@ -38,7 +38,6 @@ struct plant_layout {
 
 // everything an instance needs, shared by the instances of one unpacked FMU
 struct plant_spec {
-  std::string resource_dir;
   std::string urdf_path;
   std::vector<std::string> package_path;
   robot_model model;
@@ -404,7 +403,6 @@ std::shared_ptr<const sdk::fmu_definition> load_plant_fmu(const std::string& res
   const fs::path dir(resource_dir);
   const plant_manifest manifest = read_plant_manifest((dir / k_plant_manifest).string());
   auto spec = std::make_shared<plant_spec>();
-  spec->resource_dir = resource_dir;
   spec->urdf_path = (dir / manifest.urdf).string();
   for (const std::string& p : manifest.package_path) {
     spec->package_path.push_back((dir / p).string());
