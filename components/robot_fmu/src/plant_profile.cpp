@@ -11,8 +11,6 @@
 #include <set>
 #include <sstream>
 
-#include "stride/common/text.hpp"
-
 namespace stride::robot {
 
 namespace {
@@ -351,10 +349,6 @@ plant_profile default_plant_profile() {
   p.source = "(no profile)";
   p.base.settings.assign(std::size(k_settings), k_unset);
   return p;
-}
-
-bool matches_pattern(std::string_view pattern, std::string_view name) {
-  return text::glob_match(pattern, name);
 }
 
 }  // namespace stride::robot

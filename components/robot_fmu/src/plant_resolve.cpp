@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "stride/common/text.hpp"
 #include "stride/robot/plant_profile.hpp"
 
 namespace stride::robot {
@@ -16,7 +17,7 @@ namespace {
 
 bool matches_any(const std::vector<std::string>& patterns, const std::string& name) {
   return std::any_of(patterns.begin(), patterns.end(),
-                     [&](const std::string& p) { return matches_pattern(p, name); });
+                     [&](const std::string& p) { return text::glob_match(p, name); });
 }
 
 // fills the attributes `rule` sets
@@ -49,7 +50,7 @@ void require_link(const plant_profile& p, const robot_model& m, const std::strin
 std::vector<int> actuated_joints(const plant_profile& p, const robot_model& m) {
   for (const std::string& pattern : p.passive) {
     const bool used = std::any_of(m.joints.begin(), m.joints.end(), [&](const model_joint& j) {
-      return matches_pattern(pattern, j.name);
+      return text::glob_match(pattern, j.name);
     });
     if (!used) fail(p, "<joints passive>: '" + pattern + "' matches no joint of " + m.source);
   }
@@ -123,7 +124,7 @@ resolved_plant resolve_plant(const plant_profile& p, const robot_model& m, std::
         bool used = false;
         for (std::size_t k = 0; k < r.actuated.size(); ++k) {
           const std::string& name = m.joints[static_cast<std::size_t>(r.actuated[k])].name;
-          if (!matches_pattern(pattern, name)) continue;
+          if (!text::glob_match(pattern, name)) continue;
           used = true;
           apply_rule(servo_rule{{}, rule.values, rule.clamp_set, rule.line}, per_joint[k]);
         }
@@ -175,7 +176,7 @@ resolved_plant resolve_plant(const plant_profile& p, const robot_model& m, std::
   for (const auto& [pattern, value] : p.pose) {
     bool used = false;
     for (std::size_t k = 0; k < r.actuated.size(); ++k) {
-      if (!matches_pattern(pattern, c.servo_joints[k])) continue;
+      if (!text::glob_match(pattern, c.servo_joints[k])) continue;
       c.initial_pose[k] = value;
       used = true;
     }
@@ -196,7 +197,7 @@ resolved_plant resolve_plant(const plant_profile& p, const robot_model& m, std::
     for (const std::string& pattern : p.welds[g].patterns) {
       bool used = false;
       for (std::size_t k = 0; k < r.actuated.size(); ++k) {
-        if (!matches_pattern(pattern, c.servo_joints[k])) continue;
+        if (!text::glob_match(pattern, c.servo_joints[k])) continue;
         ids.push_back(static_cast<int>(k) + 1);
         used = true;
       }

@@ -134,19 +134,5 @@ TEST(plant_profile, a_missing_file_is_named) {
   }
 }
 
-TEST(matches_pattern, stars_and_question_marks) {
-  EXPECT_TRUE(matches_pattern("*", ""));
-  EXPECT_TRUE(matches_pattern("*", "l_knee"));
-  EXPECT_TRUE(matches_pattern("l_*", "l_knee"));
-  EXPECT_FALSE(matches_pattern("l_*", "r_knee"));
-  EXPECT_TRUE(matches_pattern("*_knee", "l_knee"));
-  EXPECT_TRUE(matches_pattern("?_knee", "r_knee"));
-  EXPECT_FALSE(matches_pattern("?_knee", "rr_knee"));
-  EXPECT_TRUE(matches_pattern("a*b*c", "axxbyybzzc"));
-  EXPECT_FALSE(matches_pattern("a*b*c", "axxbyybzz"));
-  EXPECT_TRUE(matches_pattern("knee", "knee"));
-  EXPECT_FALSE(matches_pattern("knee", "knees"));
-}
-
 }  // namespace
 }  // namespace stride::robot

@@ -116,7 +116,4 @@ resolved_plant resolve_plant(const plant_profile& profile, const robot_model& mo
                              std::string_view preset, std::span<const double> overrides = {},
                              std::span<const bool> welds_on = {});
 
-/// True when `name` matches the pattern (`*` any run, `?` one character).
-bool matches_pattern(std::string_view pattern, std::string_view name);
-
 }  // namespace stride::robot
