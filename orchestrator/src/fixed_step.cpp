@@ -375,7 +375,7 @@ void fixed_step_algorithm::setup(system_wiring wiring, std::vector<std::size_t> 
   }
   if (p.threads > 1 && p.plan.tasks.size() > 1) {
     p.runner = std::make_unique<task_runner>(
-        std::min<int>(p.threads, static_cast<int>(p.plan.tasks.size())));
+        std::min<int>(p.threads, static_cast<int>(p.plan.tasks.size())), p.plan.tasks.size());
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 
 namespace stride::cosim {
 
@@ -22,8 +24,10 @@ void spin_until(F done) {
 
 }  // namespace
 
-task_runner::task_runner(int threads) {
-  for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { worker_loop(); });
+task_runner::task_runner(int threads, std::size_t max_tasks) : claims_(max_tasks) {
+  for (int i = 1; i < threads; ++i) {
+    workers_.emplace_back([this, i] { worker_loop(static_cast<std::size_t>(i)); });
+  }
 }
 
 task_runner::~task_runner() {
@@ -77,35 +81,52 @@ void task_runner::execute(std::size_t task) {
   if (notify) changed_.notify_all();
 }
 
-void task_runner::run_independent(std::uint64_t generation, std::size_t tasks,
+bool task_runner::claim(std::size_t task, std::uint64_t generation) {
+  // generations only grow: a thread that comes late, when its generation is over, finds every
+  // task claimed by it or a later one and claims nothing
+  std::uint64_t seen = claims_[task].generation.load(std::memory_order_relaxed);
+  while (seen < generation) {
+    if (claims_[task].generation.compare_exchange_weak(seen, generation,
+                                                       std::memory_order_acq_rel)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void task_runner::run_claimed(std::size_t task, const std::function<bool(std::size_t)>& work) {
+  if (!failed_.load(std::memory_order_relaxed)) {
+    try {
+      work(task);  // nothing waits for it: what it returns does not matter
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+      failed_.store(true, std::memory_order_relaxed);
+    }
+  }
+  if (unfinished_count_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+    std::lock_guard lock(mutex_);  // the caller may be asleep on changed_
+    changed_.notify_all();
+  }
+}
+
+void task_runner::run_independent(std::size_t index, std::uint64_t generation, std::size_t tasks,
                                   const std::function<bool(std::size_t)>& work) {
-  // a ticket is the generation (high half) and the next task (low half): a thread that comes
-  // late, when its generation is over, claims nothing (and touches nothing of a later run)
-  for (;;) {
-    std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
-    std::size_t t = 0;
-    do {
-      t = static_cast<std::size_t>(ticket & 0xffffffffu);
-      if ((ticket >> 32) != generation || t >= tasks) return;
-    } while (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel));
-    if (!failed_.load(std::memory_order_relaxed)) {
-      try {
-        work(t);  // nothing waits for it: what it returns does not matter
-      } catch (...) {
-        std::lock_guard lock(mutex_);
-        if (!error_) error_ = std::current_exception();
-        failed_.store(true, std::memory_order_relaxed);
-      }
-    }
-    if (unfinished_count_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-      std::lock_guard lock(mutex_);  // the caller may be asleep on changed_
-      changed_.notify_all();
-      return;
-    }
+  const std::size_t stride = workers_.size() + 1;
+  for (std::size_t t = index; t < tasks; t += stride) {
+    if (claim(t, generation)) run_claimed(t, work);
+  }
+  // the others' tasks, last first: their home threads take theirs in ascending order
+  for (std::size_t t = tasks; t-- > 0;) {
+    if (t % stride != index && claim(t, generation)) run_claimed(t, work);
   }
 }
 
 void task_runner::run(const step_plan& plan, const std::function<bool(std::size_t)>& work) {
+  if (plan.tasks.size() > claims_.size()) {
+    throw std::logic_error("task_runner: a plan of " + std::to_string(plan.tasks.size()) +
+                           " tasks, made for at most " + std::to_string(claims_.size()));
+  }
   std::unique_lock lock(mutex_);
   plan_ = &plan;
   work_ = &work;
@@ -117,11 +138,10 @@ void task_runner::run(const step_plan& plan, const std::function<bool(std::size_
     // each thread takes its own share; no lock per task
     const std::uint64_t generation = generation_.load(std::memory_order_relaxed) + 1;
     unfinished_count_.store(plan.tasks.size(), std::memory_order_relaxed);
-    ticket_.store(generation << 32, std::memory_order_release);
     generation_.store(generation, std::memory_order_release);
     lock.unlock();
     changed_.notify_all();
-    run_independent(generation, plan.tasks.size(), work);
+    run_independent(0, generation, plan.tasks.size(), work);
     spin_until([this] { return unfinished_count_.load(std::memory_order_acquire) == 0; });
     lock.lock();
     changed_.wait(lock, [this] { return unfinished_count_.load(std::memory_order_acquire) == 0; });
@@ -166,7 +186,7 @@ void task_runner::run(const step_plan& plan, const std::function<bool(std::size_
   if (error_) std::rethrow_exception(error_);
 }
 
-void task_runner::worker_loop() {
+void task_runner::worker_loop(std::size_t index) {
   std::uint64_t seen = 0;  // the last generation of independent tasks this thread ran
   for (;;) {
     // poll a little before sleeping
@@ -186,7 +206,7 @@ void task_runner::worker_loop() {
       const std::size_t tasks = current ? plan_->tasks.size() : 0;
       const auto* work = work_;
       lock.unlock();
-      if (current) run_independent(seen, tasks, *work);
+      if (current) run_independent(index, seen, tasks, *work);
       continue;
     }
     std::size_t task = 0;

@@ -1,7 +1,9 @@
 // Runs the tasks of a step_plan on a fixed set of threads, each task after its predecessors.
 // The calling thread works too. Idle threads (workers between runs, the caller waiting for the
 // last task) spin briefly before they sleep: macro steps follow each other within microseconds,
-// and waking a sleeping thread costs tens of them.
+// and waking a sleeping thread costs tens of them. Independent tasks each have a home thread
+// that runs them step after step, so a component's memory stays in one core's cache; a thread
+// that has finished its own takes the others' that have not started.
 #ifndef STRIDE_COSIM_TASK_RUNNER_HPP
 #define STRIDE_COSIM_TASK_RUNNER_HPP
 
@@ -21,8 +23,8 @@ namespace stride::cosim {
 
 class task_runner {
  public:
-  /// Starts `threads` − 1 workers.
-  explicit task_runner(int threads);
+  /// Starts `threads` − 1 workers, for plans of at most `max_tasks` tasks.
+  task_runner(int threads, std::size_t max_tasks);
   ~task_runner();
   task_runner(const task_runner&) = delete;
   task_runner& operator=(const task_runner&) = delete;
@@ -31,15 +33,18 @@ class task_runner {
   /// a task whose work returns false (or whose predecessor was skipped) holds back its
   /// successors. Returns when every task has run or been skipped; rethrows the first exception
   /// of a work call after that (tasks not yet started are then skipped).
-  /// A plan whose tasks depend on nothing runs without a lock per task: a shared counter hands
-  /// out the tasks.
+  /// A plan whose tasks depend on nothing runs without a lock per task: task t is claimed with
+  /// one atomic exchange, first by its home thread (t modulo the thread count).
   void run(const step_plan& plan, const std::function<bool(std::size_t)>& work);
 
  private:
-  void worker_loop();
-  // takes tasks of the plan of `generation` (without dependencies) until none is left
-  void run_independent(std::uint64_t generation, std::size_t tasks,
+  void worker_loop(std::size_t index);
+  // thread `index` takes tasks of the plan of `generation` (without dependencies): its own,
+  // then those of the others that nobody has claimed
+  void run_independent(std::size_t index, std::uint64_t generation, std::size_t tasks,
                        const std::function<bool(std::size_t)>& work);
+  bool claim(std::size_t task, std::uint64_t generation);
+  void run_claimed(std::size_t task, const std::function<bool(std::size_t)>& work);
   // takes a ready task, or returns false when none is ready; with the lock held
   bool take(std::size_t& task);
   void finish(std::size_t task, bool release_successors);
@@ -63,7 +68,12 @@ class task_runner {
   // plans without dependencies: a new run is announced by a new generation
   bool independent_ = false;
   std::atomic<std::uint64_t> generation_{0};
-  std::atomic<std::uint64_t> ticket_{0};
+  // per task the generation that last claimed it, one cache line each: home threads claim
+  // their own tasks without touching a line that another thread writes
+  struct alignas(64) claim_slot {
+    std::atomic<std::uint64_t> generation{0};
+  };
+  std::vector<claim_slot> claims_;
 };
 
 }  // namespace stride::cosim
