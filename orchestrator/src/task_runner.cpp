@@ -112,13 +112,13 @@ void task_runner::run_claimed(std::size_t task, const std::function<bool(std::si
 
 void task_runner::run_independent(std::size_t index, std::uint64_t generation, std::size_t tasks,
                                   const std::function<bool(std::size_t)>& work) {
-  const std::size_t stride = workers_.size() + 1;
-  for (std::size_t t = index; t < tasks; t += stride) {
+  const std::size_t threads = workers_.size() + 1;
+  for (std::size_t t = index; t < tasks; t += threads) {
     if (claim(t, generation)) run_claimed(t, work);
   }
   // the others' tasks, last first: their home threads take theirs in ascending order
   for (std::size_t t = tasks; t-- > 0;) {
-    if (t % stride != index && claim(t, generation)) run_claimed(t, work);
+    if (t % threads != index && claim(t, generation)) run_claimed(t, work);
   }
 }
 
