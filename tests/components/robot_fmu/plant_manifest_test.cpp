@@ -2,9 +2,11 @@
 // a manifest that lacks something is refused naming the file.
 #include <gtest/gtest.h>
 
-#include <cstdio>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "stride/robot/plant_fmu.hpp"
 
@@ -13,9 +15,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// ctest runs each test in its own process, several at once: the name must differ between them
 fs::path write_temp(const std::string& text) {
-  const fs::path p =
-      fs::temp_directory_path() / ("stride-plant-manifest-" + std::to_string(std::rand()) + ".xml");
+  const fs::path p = fs::temp_directory_path() /
+                     ("stride-plant-manifest-" + std::to_string(::getpid()) + "-" +
+                      testing::UnitTest::GetInstance()->current_test_info()->name() + ".xml");
   std::ofstream(p) << text;
   return p;
 }
