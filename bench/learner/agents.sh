@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # RL steps per wall second of Experiment 1 (paper protocol) learned by one agent (a plain run),
-# by 2 agents in synchronous rounds and by 2 asynchronous agents, agents on threads of one
-# process sharing V (docs/swarm.md). Each case REPEAT times (default 3), alternating so that
-# drifting machine load hits all alike; prints the median and range of each and the speed-ups.
+# by 2 agents in synchronous rounds, by 2 asynchronous agents and by 4 agents in synchronous
+# rounds (more agents than cores: one agent's wait for a round leaves its core to another), agents
+# on threads of one process sharing V (docs/swarm.md). Each case REPEAT times (default 3),
+# alternating so that drifting machine load hits all alike; prints the median and range of each and the speed-ups.
 # usage: bench/learner/agents.sh [STEPS] [REPEAT] [BUILD_DIR]   (defaults 3000, 3, build/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -28,8 +29,11 @@ run_case() {  # name, extra arguments...
   echo "run $i, $name: $(python3 -c "print(f'{$steps / ($end - $start):.1f} RL steps/s')")" >&2
 }
 
-sed 's|<simulation |<agents count="2" mode="asynchronous"/>\n  <simulation |' "$system" \
+# <agents> follows <simulation> (the schema's order)
+sed 's|\(<simulation [^>]*/>\)|\1\n  <agents count="2" mode="asynchronous"/>|' "$system" \
   > "$out/async.xml"
+grep -q '<agents count="2" mode="asynchronous"/>' "$out/async.xml" ||
+  { echo "agents: no one-line <simulation .../> element in $system" >&2; exit 1; }
 for ((i = 1; i <= repeat; ++i)); do
   run_case one
   run_case sync2 --agents 2
@@ -38,6 +42,7 @@ for ((i = 1; i <= repeat; ++i)); do
   system="$system_async"
   run_case async2
   system="$system_saved"
+  run_case sync4 --agents 4
 done
 
 python3 - "$out/times.txt" "$steps" <<'PY'
@@ -48,11 +53,11 @@ for line in open(sys.argv[1]):
     name, start, end = line.split()
     rates.setdefault(name, []).append(steps / (float(end) - float(start)))
 labels = {"one": "1 agent (plain run)", "sync2": "2 agents, synchronous",
-          "async2": "2 agents, asynchronous"}
-for name in ("one", "sync2", "async2"):
+          "async2": "2 agents, asynchronous", "sync4": "4 agents, synchronous"}
+for name in ("one", "sync2", "async2", "sync4"):
     r = rates[name]
     print(f"{labels[name]:24s} median {statistics.median(r):7.1f} RL steps/s  "
           f"(min {min(r):.1f}, max {max(r):.1f}, n={len(r)})")
-for name in ("sync2", "async2"):
+for name in ("sync2", "async2", "sync4"):
     print(f"speed-up {labels[name]}: {statistics.median(rates[name]) / statistics.median(rates['one']):.2f}x")
 PY
