@@ -38,8 +38,11 @@ for ((w = 1; w <= max; ++w)); do
 done
 
 for n in "${counts[@]}"; do
-  sed "s|<simulation |<agents count=\"$n\" workers=\"${names[*]:0:$n}\"/>\n  <simulation |" \
+  # <agents> follows <simulation> (the schema's order)
+  sed "s|\(<simulation [^>]*/>\)|\1\n  <agents count=\"$n\" workers=\"${names[*]:0:$n}\"/>|" \
     "$root/models/experiments/exp1-learn-x20.xml" > "$out/agents$n.xml"
+  grep -q "<agents count=\"$n\"" "$out/agents$n.xml" ||
+    { echo "agents_workers: no one-line <simulation .../> element to follow" >&2; exit 1; }
 done
 for ((i = 1; i <= repeat; ++i)); do
   for n in "${counts[@]}"; do

@@ -39,13 +39,15 @@ def inclusive(file, pattern):
 
 def calls(file, pattern):
     # how often functions whose names match were called (callgrind's calls= lines)
+    # a compressed name is spelled out once, on an fn= or a cfn= line, and later given by number
     names, current, count = {}, None, 0
     for line in open(file, errors="replace"):
-        m = re.match(r"cfn=\((\d+)\)(?: (.*))?", line)
+        m = re.match(r"(c?)fn=\((\d+)\)(?: (.*))?", line)
         if m:
-            if m.group(2):
-                names[m.group(1)] = m.group(2)
-            current = names.get(m.group(1), "")
+            if m.group(3):
+                names[m.group(2)] = m.group(3)
+            if m.group(1):
+                current = names.get(m.group(2), "")
         elif line.startswith("calls=") and current and re.search(pattern, current):
             count += int(line.split("=")[1].split()[0])
     return count
@@ -57,6 +59,9 @@ stride_in_steps = inclusive(stride_file, step)
 stride_steps = calls(stride_file, step)
 hand_total = inclusive(hand_file, step)
 hand_steps = calls(hand_file, step)
+if stride_steps == 0 or hand_steps == 0:
+    sys.exit("instruction_ratio: no calls of fmu_component::step found in the profiles "
+             "(renamed?)")
 per_stride = stride_total / stride_steps
 per_hand = hand_total / hand_steps
 print(f"stride simulate_until: {stride_total} instructions over {stride_steps} component steps "
