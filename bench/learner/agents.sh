@@ -3,7 +3,8 @@
 # by 2 agents in synchronous rounds, by 2 asynchronous agents and by 4 agents in synchronous
 # rounds (more agents than cores: one agent's wait for a round leaves its core to another), agents
 # on threads of one process sharing V (docs/swarm.md). Each case REPEAT times (default 3),
-# alternating so that drifting machine load hits all alike; prints the median and range of each and the speed-ups.
+# alternating so that drifting machine load hits all alike; prints the median and range of each
+# and the speed-ups.
 # usage: bench/learner/agents.sh [STEPS] [REPEAT] [BUILD_DIR]   (defaults 3000, 3, build/)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
