@@ -122,16 +122,10 @@ calibration_report fit_joint_posture(const joint_target& target, const gait::wal
                                 "arm and head servos, so there is nothing to fit");
   detail::configure_block(problem, block.data(), fit, options.bounds);
 
-  ceres::Solver::Options so;
-  so.minimizer_type = ceres::TRUST_REGION;
-  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = options.max_iterations;
+  ceres::Solver::Options so = detail::levenberg_marquardt(options.max_iterations);
   so.function_tolerance = 1e-12;
   so.gradient_tolerance = 1e-12;
   so.parameter_tolerance = 1e-10;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   if (summary.termination_type == ceres::FAILURE)

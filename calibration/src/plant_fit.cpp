@@ -200,16 +200,10 @@ calibration_report fit_plant_posture(const plant_target& target, const gait::wal
   detail::configure_block(problem, block.data(), fit, options.bounds);
 
   close_enough stop;
-  ceres::Solver::Options so;
-  so.minimizer_type = ceres::TRUST_REGION;
-  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = target.max_iterations;
+  ceres::Solver::Options so = detail::levenberg_marquardt(target.max_iterations);
   so.function_tolerance = 1e-6;
   so.gradient_tolerance = 1e-10;
   so.parameter_tolerance = 1e-4;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
   so.callbacks.push_back(&stop);
   // no projected line search inside the trust region: it needs a Jacobian (2 settles per fitted
   // offset) at every trial point and cannot gain anything on the plant's count-sized plateaus

@@ -76,6 +76,17 @@ calibration_report start_report(const std::string& mode, const std::string& sour
   return r;
 }
 
+ceres::Solver::Options levenberg_marquardt(int max_iterations) {
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = max_iterations;
+  so.logging_type = ceres::SILENT;
+  so.num_threads = 1;
+  return so;
+}
+
 void configure_block(ceres::Problem& problem, double* block, const std::vector<std::size_t>& fit,
                      const offset_bounds& bounds) {
   std::vector<int> constant;

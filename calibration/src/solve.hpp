@@ -25,6 +25,10 @@ calibration_report start_report(const std::string& mode, const std::string& sour
                                 gait::ik_mode ik, const gait::walking_params& start,
                                 const std::vector<std::size_t>& fit);
 
+/// Levenberg-Marquardt with a dense QR step, silent and on one thread (so that every run gives
+/// the same result); each fit sets its own tolerances.
+ceres::Solver::Options levenberg_marquardt(int max_iterations);
+
 /// Bounds on the fitted entries of the 7-value block; the others held constant.
 void configure_block(ceres::Problem& problem, double* block, const std::vector<std::size_t>& fit,
                      const offset_bounds& bounds);

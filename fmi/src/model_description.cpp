@@ -6,32 +6,12 @@
 #include <sstream>
 
 #include "start_value.hpp"
+#include "stride/common/text.hpp"
 
 namespace stride::sdk {
 namespace {
 
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+using stride::text::xml_escape;  // unqualified: sdk::text is the FMI string type
 
 std::string number(double x) {
   char buffer[40];
@@ -41,8 +21,8 @@ std::string number(double x) {
 
 void write_type_element(std::ostringstream& xml, const variable& v, const void* defaults) {
   xml << "      <" << to_string(v.type);
-  if (v.has_start()) xml << " start=\"" << escape(format_start_value(v, defaults)) << '"';
-  if (v.type == value_type::real && !v.unit.empty()) xml << " unit=\"" << escape(v.unit) << '"';
+  if (v.has_start()) xml << " start=\"" << xml_escape(format_start_value(v, defaults)) << '"';
+  if (v.type == value_type::real && !v.unit.empty()) xml << " unit=\"" << xml_escape(v.unit) << '"';
   if (v.type == value_type::real || v.type == value_type::integer) {
     if (v.has_min) xml << " min=\"" << number(v.min) << '"';
     if (v.has_max) xml << " max=\"" << number(v.max) << '"';
@@ -57,14 +37,14 @@ std::string write_model_description(const fmu_definition& fmu, const std::string
   const variable_table& table = fmu.table;
   std::ostringstream xml;
   xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"" << escape(info.model_name)
-      << "\" guid=\"" << compute_guid(fmu) << "\" description=\"" << escape(info.description)
-      << "\" author=\"" << escape(info.author) << "\" version=\"" << escape(info.version)
+      << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"" << xml_escape(info.model_name)
+      << "\" guid=\"" << compute_guid(fmu) << "\" description=\"" << xml_escape(info.description)
+      << "\" author=\"" << xml_escape(info.author) << "\" version=\"" << xml_escape(info.version)
       << "\" generationTool=\"Stride component SDK\"";
   if (!generation_time.empty()) xml << " generationDateAndTime=\"" << generation_time << '"';
   xml << " variableNamingConvention=\"structured\" numberOfEventIndicators=\"0\">\n";
 
-  xml << "  <CoSimulation modelIdentifier=\"" << escape(info.model_identifier)
+  xml << "  <CoSimulation modelIdentifier=\"" << xml_escape(info.model_identifier)
       << "\" canHandleVariableCommunicationStepSize=\"true\" canGetAndSetFMUstate=\"true\""
          " canSerializeFMUstate=\"true\" canNotUseMemoryManagementFunctions=\"true\"/>\n";
 
@@ -74,7 +54,7 @@ std::string write_model_description(const fmu_definition& fmu, const std::string
   }
   if (!units.empty()) {
     xml << "  <UnitDefinitions>\n";
-    for (const std::string& u : units) xml << "    <Unit name=\"" << escape(u) << "\"/>\n";
+    for (const std::string& u : units) xml << "    <Unit name=\"" << xml_escape(u) << "\"/>\n";
     xml << "  </UnitDefinitions>\n";
   }
 
@@ -86,8 +66,8 @@ std::string write_model_description(const fmu_definition& fmu, const std::string
       << "    <Category name=\"logEvents\" description=\"Lifecycle events of the instance\"/>\n"
       << "    <Category name=\"logCalls\" description=\"Every FMI function call\"/>\n";
   for (const auto& [name, description] : info.log_categories) {
-    xml << "    <Category name=\"" << escape(name) << "\" description=\"" << escape(description)
-        << "\"/>\n";
+    xml << "    <Category name=\"" << xml_escape(name) << "\" description=\""
+        << xml_escape(description) << "\"/>\n";
   }
   xml << "  </LogCategories>\n";
 
@@ -97,11 +77,11 @@ std::string write_model_description(const fmu_definition& fmu, const std::string
 
   xml << "  <ModelVariables>\n";
   for (const variable& v : table.variables()) {
-    xml << "    <ScalarVariable name=\"" << escape(v.name) << "\" valueReference=\""
+    xml << "    <ScalarVariable name=\"" << xml_escape(v.name) << "\" valueReference=\""
         << v.value_reference << "\" causality=\"" << to_string(v.causality_kind)
         << "\" variability=\"" << to_string(v.variability_kind) << '"';
     if (v.initial != initial_kind::none) xml << " initial=\"" << to_string(v.initial) << '"';
-    if (!v.description.empty()) xml << " description=\"" << escape(v.description) << '"';
+    if (!v.description.empty()) xml << " description=\"" << xml_escape(v.description) << '"';
     xml << ">\n";
     write_type_element(xml, v, table.defaults());
     xml << "    </ScalarVariable>\n";

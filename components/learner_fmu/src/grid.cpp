@@ -5,18 +5,12 @@
 #include <cmath>
 #include <limits>
 
+#include "stride/common/text.hpp"
+
 namespace stride::learner {
 namespace {
 
-bool is_blank(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\n';
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
-  return s;
-}
+using text::trim;
 
 // decimal places written in a plain decimal number ("15" -> 0, "0.25" -> 2); exponent forms
 // ("1e-3") count their significant digits too
@@ -46,21 +40,16 @@ bool valid_name(std::string_view name) {
 }  // namespace
 
 std::string format_number(double v) {
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, res.ptr);
+  return text::format_double(v);
 }
 
-double parse_number(std::string_view text, std::string_view what) {
-  std::string_view t = trim(text);
-  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  double v = 0;
-  const auto res = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (t.empty() || res.ec != std::errc() || res.ptr != t.data() + t.size() || !std::isfinite(v)) {
-    throw learner_error(std::string(what) + ": '" + std::string(trim(text)) +
+double parse_number(std::string_view input, std::string_view what) {
+  const auto v = text::parse_double(input);
+  if (!v || !std::isfinite(*v)) {
+    throw learner_error(std::string(what) + ": '" + std::string(trim(input)) +
                         "' is not a finite number");
   }
-  return v;
+  return *v;
 }
 
 std::vector<std::string> split_list(std::string_view text) {
@@ -86,12 +75,11 @@ std::vector<std::int64_t> parse_step_list(std::string_view text, std::string_vie
   std::vector<std::int64_t> out;
   if (trim(text).empty()) return out;
   for (const std::string& item : split_list(text)) {
-    std::int64_t v = 0;
-    const auto res = std::from_chars(item.data(), item.data() + item.size(), v);
-    if (item.empty() || res.ec != std::errc() || res.ptr != item.data() + item.size() || v <= 0) {
+    const auto v = text::parse_integer(item);
+    if (!v || *v <= 0) {
       throw learner_error(std::string(what) + ": '" + item + "' is not a positive whole number");
     }
-    out.push_back(v);
+    out.push_back(*v);
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -115,14 +103,8 @@ state_grid state_grid::parse(std::string_view text, std::string_view what) {
     const std::string at = where + " dimension '" + item + "'";
     if (item.empty())
       throw learner_error(where + ": empty dimension in '" + std::string(text) + "'");
-    std::vector<std::string_view> fields;
-    std::size_t begin = 0;
-    for (std::size_t i = 0; i <= item.size(); ++i) {
-      if (i == item.size() || item[i] == ':') {
-        fields.push_back(trim(std::string_view(item).substr(begin, i - begin)));
-        begin = i + 1;
-      }
-    }
+    std::vector<std::string_view> fields = text::split(item, ':');
+    for (std::string_view& f : fields) f = trim(f);
     if (fields.size() != 4) {
       throw learner_error(at + ": expected name:min:max:step (4 fields, got " +
                           std::to_string(fields.size()) + ")");

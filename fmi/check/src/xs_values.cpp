@@ -103,7 +103,10 @@ std::optional<double> parse_xs_double(std::string_view s) {
       return std::nullopt;
   }
   if (!has_digit) return std::nullopt;
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (!s.empty() && s.front() == '+') {
+    s.remove_prefix(1);
+    if (!s.empty() && s.front() == '-') return std::nullopt;  // "+-1": from_chars would take "-1"
+  }
   double v = 0.0;
   auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc{} || end != s.data() + s.size()) return std::nullopt;

@@ -73,6 +73,10 @@ TEST(learner_grid, bad_grid_strings_are_errors_naming_the_fault) {
               HasSubstr("'period_time:450:960': expected name:min:max:step"));
   EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:abc:15"); }),
               HasSubstr("max: 'abc' is not a finite number"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:+-450:960:15"); }),
+              HasSubstr("min: '+-450' is not a finite number"));
+  EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:inf:15"); }),
+              HasSubstr("max: 'inf' is not a finite number"));
   EXPECT_THAT(error_of([] { state_grid::parse("period_time:450:960:0"); }),
               HasSubstr("step must be > 0"));
   EXPECT_THAT(error_of([] { state_grid::parse("period_time:960:450:15"); }),
@@ -102,6 +106,9 @@ TEST(learner_grid, settings_out_of_range_are_errors_naming_the_setting) {
   EXPECT_THAT(error_of([&] { c.validate(); }), HasSubstr("eval_point: needs one value per grid"));
   EXPECT_THAT(error_of([] { parse_step_list("100,x", "snapshot_steps"); }),
               HasSubstr("snapshot_steps: 'x' is not a positive whole number"));
+  EXPECT_THAT(error_of([] { parse_step_list("100,-5", "s"); }),
+              HasSubstr("'-5' is not a positive"));
+  EXPECT_THAT(error_of([] { parse_step_list("1e5", "s"); }), HasSubstr("'1e5' is not a positive"));
   EXPECT_EQ(parse_step_list("300, 100,100", "s"), (std::vector<std::int64_t>{100, 300}));
 }
 

@@ -1,5 +1,5 @@
-// Small text helpers shared by the readers of INI and CSV files and the name patterns of
-// recorders and plant profiles (header only).
+// Small text helpers shared by the readers of INI and CSV files, the name patterns of recorders
+// and plant profiles, and the writers of XML and HTML (header only).
 #pragma once
 
 #include <charconv>
@@ -76,10 +76,18 @@ inline std::vector<std::string> csv_fields(std::string_view line) {
   return fields;
 }
 
+/// `s` trimmed and without one leading '+' (which from_chars refuses); empty when nothing
+/// follows, or a second sign ("+-1" is not a number).
+inline std::string_view number_text(std::string_view s) {
+  s = trim(s);
+  if (s.empty() || s.front() != '+') return s;
+  s.remove_prefix(1);
+  return !s.empty() && (s.front() == '-' || s.front() == '+') ? std::string_view{} : s;
+}
+
 /// A whole (trimmed) string as a decimal double ('+' accepted); nullopt otherwise.
 inline std::optional<double> parse_double(std::string_view s) {
-  s = trim(s);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  s = number_text(s);
   if (s.empty()) return std::nullopt;
   double v = 0;
   const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -89,8 +97,7 @@ inline std::optional<double> parse_double(std::string_view s) {
 
 /// A whole (trimmed) string as a decimal integer; nullopt otherwise.
 inline std::optional<long long> parse_integer(std::string_view s) {
-  s = trim(s);
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  s = number_text(s);
   if (s.empty()) return std::nullopt;
   long long v = 0;
   const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -125,6 +132,32 @@ inline bool glob_match(std::string_view pattern, std::string_view text) noexcept
   }
   while (p < pattern.size() && pattern[p] == '*') ++p;
   return p == pattern.size();
+}
+
+/// `s` with the characters that end or open markup (& < > ") replaced by entities: safe inside
+/// double-quoted XML or HTML attributes and in element text.
+inline std::string xml_escape(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace stride::text
