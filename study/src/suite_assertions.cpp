@@ -1,9 +1,9 @@
 #include "stride/study/suite_assertions.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
+#include "stride/common/text.hpp"
 #include "stride/learner/artefacts.hpp"
 
 namespace stride::study {
@@ -12,16 +12,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double number(const std::string& text, const std::string& what) {
-  std::string t = text;
-  while (!t.empty() && t.front() == ' ') t.erase(t.begin());
-  while (!t.empty() && t.back() == ' ') t.pop_back();
-  double v = 0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v)) {
-    throw std::invalid_argument(what + ": '" + text + "' is not a number");
-  }
-  return v;
+double number(const std::string& input, const std::string& what) {
+  const auto v = text::parse_double(input);
+  if (!v || !std::isfinite(*v))
+    throw std::invalid_argument(what + ": '" + input + "' is not a number");
+  return *v;
 }
 
 // "name=value, name=value" (values may be "lo..hi")

@@ -1,6 +1,5 @@
 #include "stride/suite/results.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -13,11 +12,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::optional<double> number(const std::string& text) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
-  return v;
+std::optional<double> number(const std::string& field) {
+  return text::parse_double(field);
 }
 
 }  // namespace
