@@ -4,12 +4,13 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdlib>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
 #include <unordered_set>
 
+#include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
 
@@ -66,12 +67,13 @@ struct md_reader {
   std::optional<double> parse_double(const tinyxml2::XMLElement* e, const char* name) const {
     const char* v = e->Attribute(name);
     if (v == nullptr) return std::nullopt;
-    char* end = nullptr;
-    const double d = std::strtod(v, &end);
-    if (end == v || !detail::trim(end).empty()) {
-      fail(e->GetLineNum(), std::string("attribute ") + name + "=\"" + v + "\" is not a number");
+    // xs:double would allow INF and NaN; a default experiment needs finite times and steps
+    const auto d = text::parse_double(v);
+    if (!d || !std::isfinite(*d)) {
+      fail(e->GetLineNum(),
+           std::string("attribute ") + name + "=\"" + v + "\" is not a finite number");
     }
-    return d;
+    return *d;
   }
 
   // An absent attribute takes `fallback`; a misspelt one is an error.

@@ -271,6 +271,11 @@ TEST_F(cosim_import, model_description_problems_are_named) {
   EXPECT_THAT(with("dup", replaced("name=\"n\"", "name=\"u\"")),
               HasSubstr("duplicate variable name \"u\""));
   EXPECT_THAT(with("broken", replaced("</ModelVariables>", "")), HasSubstr("malformed XML"));
+  EXPECT_THAT(with("nanstop", replaced("stopTime=\"10\"", "stopTime=\"NaN\"")),
+              HasSubstr("nanstop.fmu!modelDescription.xml:10: attribute stopTime=\"NaN\" is not "
+                        "a finite number"));
+  EXPECT_THAT(with("hexstep", replaced("stepSize=\"0.008\"", "stepSize=\"0x1p-7\"")),
+              HasSubstr("attribute stepSize=\"0x1p-7\" is not a finite number"));
   const fs::path empty = root.path() / "empty.fmu";
   write_zip(empty, {{"resources/x", "x"}});
   EXPECT_THAT(load_error(empty, options()),
