@@ -73,7 +73,10 @@ int main(int argc, char** argv) {
   /* the resource location must be an absolute file:// URI */
   char dir[PATH_MAX];
   if (realpath(argv[1], dir) == NULL) fail("no such folder");
-  const double seconds = atof(argv[2]);
+  char* end = NULL;
+  const double seconds = strtod(argv[2], &end);
+  if (end == argv[2] || *end != '\0' || !(seconds > 0 && seconds < 1e6))
+    fail("SECONDS must be a number of seconds, more than 0");
   char path[PATH_MAX + 64];
 
   snprintf(path, sizeof path, "%s/modelDescription.xml", dir);

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -253,24 +254,41 @@ saved_state* find_state(instance& inst, fmi2FMUstate s) {
   return inst.saved_states.count(state) ? state : nullptr;
 }
 
-// "file:///a/b" or "file:/a/b" → "/a/b", with %XX decoded.
+// "file:///a/b", "file://host/a/b" or "file:/a/b" → "/a/b", with %XX decoded; throws
+// std::invalid_argument naming the location when it cannot be read.
 std::string path_from_uri(const char* uri) {
   if (uri == nullptr) return {};
   std::string s(uri);
+  const auto bad = [&](const std::string& why) {
+    return std::invalid_argument("resource location '" + std::string(uri) + "': " + why);
+  };
   if (s.rfind("file://", 0) == 0) {
     s = s.substr(7);
-    if (!s.empty() && s[0] != '/') s = s.substr(s.find('/'));  // drop an authority part
+    if (!s.empty() && s[0] != '/') {  // an authority part (host) before the path
+      const auto slash = s.find('/');
+      if (slash == std::string::npos) throw bad("no path after the host");
+      s = s.substr(slash);
+    }
   } else if (s.rfind("file:", 0) == 0) {
     s = s.substr(5);
   }
+  const auto hex = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
   std::string out;
   for (size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '%' && i + 2 < s.size()) {
-      out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
+    if (s[i] != '%') {
       out += s[i];
+      continue;
     }
+    const int high = i + 1 < s.size() ? hex(s[i + 1]) : -1;
+    const int low = i + 2 < s.size() ? hex(s[i + 2]) : -1;
+    if (high < 0 || low < 0) throw bad("'" + s.substr(i, 3) + "' is not a percent-encoded byte");
+    out += static_cast<char>(high * 16 + low);
+    i += 2;
   }
   while (out.size() > 1 && out.back() == '/') out.pop_back();
   return out;

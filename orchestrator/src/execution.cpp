@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "state_bytes.hpp"
+#include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim {
@@ -70,12 +71,8 @@ void check_range(const variable_description& v, const scalar_value& value,
   } else {
     return;
   }
-  const auto bound = [](const std::optional<std::string>& text) -> std::optional<double> {
-    if (!text) return std::nullopt;
-    char* end = nullptr;
-    const double b = std::strtod(text->c_str(), &end);
-    if (end == text->c_str() || *end != '\0') return std::nullopt;
-    return b;
+  const auto bound = [](const std::optional<std::string>& limit) -> std::optional<double> {
+    return limit ? text::parse_double(*limit) : std::nullopt;
   };
   if (const auto lo = bound(v.min); lo && x < *lo) {
     throw validation_error(what + " = " + format_scalar(value) + " is below its minimum " + *v.min);

@@ -137,6 +137,37 @@ TEST(resource_fmu, resources_that_define_no_fmu_fail_instantiation_with_the_reas
       << g_messages.back();
 }
 
+TEST(resource_fmu, the_resource_uri_is_percent_decoded_and_a_bad_escape_is_named) {
+  const fs::path spaced = resources_with_width("with space", "2");
+  std::string encoded = uri(spaced);
+  encoded.replace(encoded.find(' '), 1, "%20");
+  const std::string guid = sdk::compute_guid(*sdk::detail::fmu_for(spaced.string()));
+  fmi2Component c = fmi2Instantiate("e", fmi2CoSimulation, guid.c_str(), encoded.c_str(),
+                                    &k_callbacks, fmi2False, fmi2False);
+  EXPECT_NE(c, nullptr);
+  fmi2FreeInstance(c);
+
+  for (const std::string& broken : {uri(spaced) + "%zz", uri(spaced) + "%4"}) {
+    g_messages.clear();
+    EXPECT_EQ(fmi2Instantiate("f", fmi2CoSimulation, guid.c_str(), broken.c_str(), &k_callbacks,
+                              fmi2False, fmi2False),
+              nullptr);
+    ASSERT_FALSE(g_messages.empty());
+    // the logger's message is a format string: a literal '%' arrives doubled
+    EXPECT_NE(g_messages.back().find("resource location '" + uri(spaced) + "%%"), std::string::npos)
+        << g_messages.back();
+    EXPECT_NE(g_messages.back().find("is not a percent-encoded byte"), std::string::npos)
+        << g_messages.back();
+  }
+  g_messages.clear();
+  EXPECT_EQ(fmi2Instantiate("g", fmi2CoSimulation, guid.c_str(), "file://host", &k_callbacks,
+                            fmi2False, fmi2False),
+            nullptr);
+  ASSERT_FALSE(g_messages.empty());
+  EXPECT_NE(g_messages.back().find("no path after the host"), std::string::npos)
+      << g_messages.back();
+}
+
 }  // namespace
 
 STRIDE_FMU_FROM_RESOURCES(load)
