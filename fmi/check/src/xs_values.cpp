@@ -121,8 +121,10 @@ bool is_xs_date_time(std::string_view s) {
   if (!std::regex_match(text, m, pattern)) return false;
   const std::string year_digits = m[2].str();
   if (year_digits.size() > 4 && year_digits.front() == '0') return false;
-  const long year = std::stol(year_digits);
-  if (year == 0) return false;
+  if (year_digits.find_first_not_of('0') == std::string::npos) return false;  // no year 0
+  // leap years repeat every 400 years, and 10000 is a multiple of 400: the last four digits
+  // decide, however long the year
+  const long year = std::stol(year_digits.substr(year_digits.size() - 4));
   const int month = to_int(m[3].str());
   const int day = to_int(m[4].str());
   const int hour = to_int(m[5].str());

@@ -75,6 +75,10 @@ TEST(fmi_check_xs_values, date_time_fields_are_range_checked) {
   EXPECT_FALSE(is_xs_date_time("0000-01-01T00:00:00"));
   EXPECT_FALSE(is_xs_date_time("2026-12-03T04:00:00+14:30"));
   EXPECT_FALSE(is_xs_date_time("2026-12-03 04:00:00"));
+  // years of any length: no overflow, and leap years still follow the calendar
+  EXPECT_TRUE(is_xs_date_time("123456789012345678901236-02-29T00:00:00"));
+  EXPECT_FALSE(is_xs_date_time("123456789012345678901900-02-29T00:00:00"));
+  EXPECT_TRUE(is_xs_date_time("-0044-03-15T12:00:00"));
 }
 
 TEST(fmi_check_xs_values, c_identifier_and_quote) {
