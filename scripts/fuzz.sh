@@ -9,8 +9,8 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${STRIDE_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
 seconds="${1:-600}"
 parallel="${2:-2}"
-targets=(system_xml_fuzz suite_xml_fuzz model_description_fuzz fmu_archive_fuzz config_ini_fuzz
-         posture_fuzz urdf_fuzz checkpoint_fuzz view_frames_fuzz)
+targets=(system_xml_fuzz suite_xml_fuzz model_description_fuzz fmu_check_fuzz fmu_archive_fuzz
+         config_ini_fuzz posture_fuzz urdf_fuzz checkpoint_fuzz view_frames_fuzz)
 for t in "${targets[@]}"; do
   [ -x "$build/fuzz/$t" ] || { echo "fuzz: $build/fuzz/$t not built (run scripts/sanitize.sh)"; exit 1; }
 done

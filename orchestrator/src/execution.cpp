@@ -1,7 +1,6 @@
 #include "stride/cosim/execution.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 
 #include "state_bytes.hpp"
 #include "stride/common/text.hpp"

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <sstream>
 
+#include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
 
@@ -96,7 +97,7 @@ void apply_override(system_structure& system, const std::string& assignment) {
     throw validation_error("--set '" + assignment + "': expected component.variable=value");
   }
   try {
-    system.set(std::string(detail::trim(assignment.substr(0, eq))), assignment.substr(eq + 1),
+    system.set(std::string(text::trim(assignment.substr(0, eq))), assignment.substr(eq + 1),
                {"--set " + assignment, 0});
   } catch (const validation_error& e) {
     throw validation_error(std::string("--set: ") + e.what());

@@ -95,19 +95,6 @@ inline std::string describe_error(const tinyxml2::XMLDocument& doc) {
   return name;
 }
 
-/// Trims blanks at both ends.
-inline std::string_view trim(std::string_view s) {
-  while (!s.empty() &&
-         (s.front() == ' ' || s.front() == '\t' || s.front() == '\n' || s.front() == '\r')) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() &&
-         (s.back() == ' ' || s.back() == '\t' || s.back() == '\n' || s.back() == '\r')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
-
 }  // namespace stride::cosim::detail
 
 #endif  // STRIDE_COSIM_SRC_XML_UTIL_HPP
