@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "calibrate.hpp"
@@ -10,9 +11,12 @@
 #include "installed_files.hpp"
 #include "plot.hpp"
 #include "robot_fmu.hpp"
+#include "security.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/run.hpp"
+#include "stride/remote/keystore.hpp"
+#include "stride/remote/settings.hpp"
 #include "stride/study/run_hooks.hpp"
 #include "stride/study/suite_assertions.hpp"
 #include "stride/suite/assertions.hpp"
@@ -21,6 +25,10 @@
 #include "workers.hpp"
 
 int main(int argc, char** argv) {
+  // DDS's threads end before exit's clean-up handlers run (OpenSSL's among them)
+  struct close_dds_on_return {
+    ~close_dds_on_return() { stride::remote::close_dds(); }
+  } dds_guard;
   CLI::App app{"stride: FMI 2.0 co-simulation of FMUs wired by a system XML"};
   app.set_version_flag("--version", std::string(stride::cosim::version()));
   app.require_subcommand(1);
@@ -119,6 +127,8 @@ int main(int argc, char** argv) {
   test->add_option("--output,-o", test_args.output,
                    "Folder for the cases' runs (default ./stride-out/<suite>-<YYYYmmdd-HHMMSS>)");
   test->add_flag("--quiet,-q", test_args.quiet, "Print only the closing line");
+  std::filesystem::path test_security;  // passed on to the cases' processes in the environment
+  stride::cli::add_security_option(*test, test_security);
 
   stride::cli::validate_arguments validate_args;
   std::string validate_file;
@@ -142,6 +152,8 @@ int main(int argc, char** argv) {
   auto* worker = stride::cli::add_worker_command(app, worker_args);
   stride::cli::workers_arguments workers_args;
   auto* workers = stride::cli::add_workers_command(app, workers_args);
+  stride::cli::security_arguments security_args;
+  auto* security = stride::cli::add_security_command(app, security_args);
 
   stride::cli::calibrate_arguments calibrate_args;
   auto* calibrate = stride::cli::add_calibrate_command(app, calibrate_args);
@@ -155,6 +167,8 @@ int main(int argc, char** argv) {
   auto* robot_fmu = stride::cli::add_robot_fmu_command(app, robot_fmu_args);
 
   CLI11_PARSE(app, argc, argv);
+  // every DDS participant of this process checks its identity first (docs/distributed.md)
+  stride::remote::set_identity_check(&stride::remote::keystore::check_identity);
 
   try {
     if (*run) {
@@ -195,6 +209,7 @@ int main(int argc, char** argv) {
     if (*calibrate) return stride::cli::calibrate(calibrate_args);
     if (*worker) return stride::cli::worker(worker_args);
     if (*workers) return stride::cli::workers(workers_args);
+    if (*security) return stride::cli::security(security_args);
     if (*plot) {
       // the study adds the learner's figures and summary for its runs
       return stride::cli::plot(plot_args, stride::study::plot_learner_runs);

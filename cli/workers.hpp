@@ -5,18 +5,25 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "stride/remote/settings.hpp"
 
 namespace stride::cli {
 
-/// Adds --domain and --dds-config to `command`; parsing fills `dds`.
+/// Adds --domain, --dds-config and --security to `command`; parsing fills `dds`.
 void add_dds_options(CLI::App& command, remote::dds_settings& dds);
+/// Adds --security: a DDS Security identity for every participant of the process (it is also
+/// put into STRIDE_SECURITY, for the participants of FMUs and for child processes).
+void add_security_option(CLI::App& command, std::filesystem::path& identity);
 
 struct worker_arguments {
   std::string name;
   remote::dds_settings dds;
+  bool insecure = false;                         ///< serve without security although reachable
+  std::vector<std::filesystem::path> allow_fmu;  ///< --allow-fmu sources (empty: any FMU)
 };
 
 struct workers_arguments {

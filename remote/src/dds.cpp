@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "dds_security.hpp"
+
 namespace stride::remote::dds {
 
 namespace fs = std::filesystem;
@@ -61,10 +63,42 @@ entity make_participant(const dds_settings& settings) {
                                " is already set up with another configuration in this process");
     }
   }
-  return entity(
-      check(dds_create_participant(static_cast<dds_domainid_t>(settings.domain), nullptr, nullptr),
-            "cannot join DDS domain " + std::to_string(settings.domain)));
+  const fs::path identity = effective_identity(settings);
+  if (identity.empty()) {
+    return entity(check(
+        dds_create_participant(static_cast<dds_domainid_t>(settings.domain), nullptr, nullptr),
+        "cannot join DDS domain " + std::to_string(settings.domain)));
+  }
+  dds_qos_t* qos = dds_create_qos();
+  try {
+    add_security(qos, identity);
+    check_identity(identity, settings.domain);
+  } catch (...) {
+    dds_delete_qos(qos);
+    throw;
+  }
+  const dds_entity_t p =
+      dds_create_participant(static_cast<dds_domainid_t>(settings.domain), qos, nullptr);
+  dds_delete_qos(qos);
+  // Cyclone's log (stderr) has said which file or check failed
+  return entity(check(p, "cannot join DDS domain " + std::to_string(settings.domain) +
+                             " with the security identity " + identity.string() +
+                             " (see the DDS messages above and `stride security show " +
+                             identity.string() + "`)"));
 }
+
+}  // namespace stride::remote::dds
+
+void stride::remote::close_dds() {
+  {
+    std::lock_guard lock(dds::g_domains_mutex);
+    if (dds::g_domains.empty()) return;  // DDS never started here
+    dds::g_domains.clear();
+  }
+  dds_delete(DDS_CYCLONEDDS_HANDLE);
+}
+
+namespace stride::remote::dds {
 
 dds_qos_t* reliable_qos() {
   dds_qos_t* qos = dds_create_qos();

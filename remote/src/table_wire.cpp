@@ -3,7 +3,11 @@
 namespace stride::remote::table_wire {
 
 dds::entity participant(const table_endpoint& where) {
-  return dds::make_participant(dds_settings{where.domain, where.config_file});
+  // the identity is the process's own (STRIDE_SECURITY): a path from another host means nothing
+  dds_settings settings;
+  settings.domain = where.domain;
+  settings.config_file = where.config_file;
+  return dds::make_participant(settings);
 }
 
 topics::topics(dds_entity_t participant) {

@@ -14,6 +14,7 @@
 #include "dds.hpp"
 #include "hosted.hpp"
 #include "protocol.hpp"
+#include "refused_peers.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/run.hpp"
@@ -32,6 +33,10 @@ std::string host_name() {
   char host[256] = {};
   ::gethostname(host, sizeof host - 1);
   return host;
+}
+
+std::string worker_name(const worker_options& o) {
+  return o.name.empty() ? host_name() + "-" + std::to_string(::getpid()) : o.name;
 }
 
 std::vector<worker_description> read_announcements(dds_entity_t reader) {
@@ -62,7 +67,7 @@ class host {
  public:
   explicit host(const worker_options& o)
       : options_(o),
-        name_(o.name.empty() ? host_name() + "-" + std::to_string(::getpid()) : o.name),
+        name_(worker_name(o)),
         participant_(dds::make_participant(o.dds)),
         topics_(participant_.get()),
         cache_("stride-worker-") {
@@ -222,7 +227,15 @@ class host {
 
   // loads a shipped archive (or says it needs it)
   status load(const stride_remote_request& r) {
-    const std::string hash = r.text;
+    const std::string hash = r.text != nullptr ? r.text : "";
+    if (options_.allowed_fmus && options_.allowed_fmus->count(hash) == 0) {
+      log("run " + std::string(r.run != nullptr ? r.run : "") + ": refused FMU " + hash +
+          " for component '" + (r.component != nullptr ? r.component : "") +
+          "': not on the allow-list");
+      throw std::runtime_error("the FMU archive with SHA-256 " + hash +
+                               " is not on the allow-list of worker '" + name_ +
+                               "' (stride worker --allow-fmu)");
+    }
     if (fmus_.count(hash) > 0) return status::ok;
     if (r.blob._length == 0) return status::need_archive;
     const std::vector<std::byte> archive = get_blob(r.blob);
@@ -414,6 +427,12 @@ class host {
 }  // namespace
 
 void serve(const worker_options& options, const std::atomic<bool>& stop) {
+  const std::string name = worker_name(options);
+  refused_peer_log refused([&](const std::string& line) {
+    if (options.log == nullptr) return;
+    std::fprintf(options.log, "worker %s: %s\n", name.c_str(), line.c_str());
+    std::fflush(options.log);
+  });
   host h(options);
   if (options.log != nullptr) {
     std::fprintf(options.log, "worker %s ready on DDS domain %d (pid %ld)\n", h.name().c_str(),

@@ -23,11 +23,13 @@ using cosim::test::spawn;
 
 class worker_process {
  public:
-  /// Starts `stride worker --name NAME --domain DOMAIN`, its output into `log`.
+  /// Starts `stride worker --name NAME --domain DOMAIN EXTRA...`, its output into `log`;
+  /// `environment` (NAME=VALUE, through env(1)) is added to its environment.
   worker_process(const std::string& stride, const std::string& name, int domain,
-                 std::filesystem::path log)
+                 std::filesystem::path log, const std::vector<std::string>& extra = {},
+                 const std::vector<std::string>& environment = {})
       : log_(std::move(log)),
-        pid_(spawn({stride, "worker", "--name", name, "--domain", std::to_string(domain)}, log_)) {}
+        pid_(spawn(command(stride, name, domain, extra, environment), log_)) {}
   ~worker_process() {
     if (pid_ > 0) {
       ::kill(pid_, SIGKILL);
@@ -74,6 +76,22 @@ class worker_process {
   }
 
  private:
+  static std::vector<std::string> command(const std::string& stride, const std::string& name,
+                                          int domain, const std::vector<std::string>& extra,
+                                          const std::vector<std::string>& environment) {
+    std::vector<std::string> args;
+    if (!environment.empty()) {
+      args.push_back("/usr/bin/env");
+      args.insert(args.end(), environment.begin(), environment.end());
+    }
+    for (const std::string& a : {stride, std::string("worker"), std::string("--name"), name,
+                                 std::string("--domain"), std::to_string(domain)}) {
+      args.push_back(a);
+    }
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  }
+
   std::filesystem::path log_;
   pid_t pid_ = 0;
 };

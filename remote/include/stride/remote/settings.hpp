@@ -13,7 +13,28 @@ struct dds_settings {
   /// A Cyclone DDS configuration file. Empty: CYCLONEDDS_URI when it is set, else the shipped
   /// loopback configuration (this machine only, no multicast).
   std::filesystem::path config_file;
+  /// A DDS Security identity: a folder `stride security add` made (KEYSTORE/NAME). Empty: the
+  /// environment variable STRIDE_SECURITY when it is set, else no security (docs/distributed.md).
+  std::filesystem::path security;
 };
+
+/// The environment variable that names the identity of every DDS participant of a process.
+inline constexpr const char* k_security_env = "STRIDE_SECURITY";
+
+/// The identity the participants of `settings` use: its own, else $STRIDE_SECURITY, else none
+/// (empty).
+std::filesystem::path effective_identity(const dds_settings& settings);
+
+/// Deletes every DDS entity of the process, domains included, and waits for DDS's threads to end.
+/// A process that used DDS calls it before it exits: a security handshake still running on a DDS
+/// thread would otherwise meet OpenSSL's clean-up at exit.
+void close_dds();
+
+/// A check of an identity (its folder) before a participant on `domain` uses it; throws saying
+/// what is wrong. The CLI sets the keystore's (certificate times, CA, domains); without one only
+/// the files are checked (FMUs do not link OpenSSL for it).
+using identity_check = void (*)(const std::filesystem::path& identity, int domain);
+void set_identity_check(identity_check check);
 
 /// The shipped loopback configuration (remote/config/loopback.xml), as text.
 const char* loopback_config();

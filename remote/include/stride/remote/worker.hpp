@@ -6,10 +6,12 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "stride/cosim/fmu.hpp"
+#include "stride/remote/allow_list.hpp"
 #include "stride/remote/settings.hpp"
 
 namespace stride::remote {
@@ -19,6 +21,9 @@ struct worker_options {
   dds_settings dds;
   cosim::fmu_import_options import;  ///< how shipped FMUs are unpacked (same checks as locally)
   std::FILE* log = stderr;           ///< the ready line and one line per run begun and ended
+  /// The FMU archives it accepts, by SHA-256; nullopt: any. Others are refused before their
+  /// bytes are written anywhere.
+  std::optional<fmu_allow_list> allowed_fmus;
 };
 
 /// Announces the worker and serves requests until `stop` becomes true (checked every 100 ms),

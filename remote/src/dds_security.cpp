@@ -1,0 +1,118 @@
+#include "dds_security.hpp"
+
+#include <dlfcn.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "stride/remote/identity.hpp"
+
+namespace stride::remote::dds {
+
+namespace fs = std::filesystem;
+
+std::string plugin_path(const char* name) {
+  const std::string file = std::string("lib") + name + ".so";
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&dds_create_participant), &info) != 0 &&
+      info.dli_fname != nullptr) {
+    const fs::path lib_dir = fs::path(info.dli_fname).parent_path();
+    for (const fs::path& candidate : {lib_dir / "libddsc0debian" / file, lib_dir / file}) {
+      if (fs::is_regular_file(candidate)) return candidate.string();
+    }
+  }
+  return name;  // Cyclone then asks the loader for lib<name>.so
+}
+
+namespace {
+
+void check_readable(const fs::path& file, const fs::path& dir) {
+  if (!fs::exists(file)) {
+    throw std::runtime_error("security identity " + dir.string() + ": " + file.string() +
+                             " is missing (make the identity with `stride security add KEYSTORE "
+                             "NAME`)");
+  }
+  if (::access(file.c_str(), R_OK) != 0) {
+    throw std::runtime_error("security identity " + dir.string() + ": " + file.string() +
+                             " is not readable by this user");
+  }
+}
+
+void check_private(const fs::path& key) {
+  struct stat st {};
+  if (::stat(key.c_str(), &st) != 0) return;  // check_readable has said why
+  if ((st.st_mode & 077) != 0) {
+    char mode[8];
+    std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+    throw std::runtime_error("private key " + key.string() + " is readable by others (mode " +
+                             mode + "): run `chmod 600 " + key.string() + "`");
+  }
+}
+
+std::string file_uri(const fs::path& p) {
+  return "file:" + fs::absolute(p).lexically_normal().string();
+}
+
+}  // namespace
+
+void add_security(dds_qos_t* qos, const fs::path& dir) {
+  if (!fs::is_directory(dir)) {
+    throw std::runtime_error("security identity " + dir.string() +
+                             " is not a folder (make one with `stride security add KEYSTORE "
+                             "NAME`)");
+  }
+  const identity_files id{dir};
+  for (const fs::path& f : id.all()) check_readable(f, dir);
+  check_private(id.private_key());
+  const struct {
+    const char* kind;
+    const char* library;
+    const char* init;
+    const char* finalize;
+  } plugins[] = {
+      {"auth", "dds_security_auth", "init_authentication", "finalize_authentication"},
+      {"crypto", "dds_security_crypto", "init_crypto", "finalize_crypto"},
+      {"access", "dds_security_ac", "init_access_control", "finalize_access_control"},
+  };
+  for (const auto& p : plugins) {
+    const std::string prefix = std::string("dds.sec.") + p.kind + ".library.";
+    dds_qset_prop(qos, (prefix + "path").c_str(), plugin_path(p.library).c_str());
+    dds_qset_prop(qos, (prefix + "init").c_str(), p.init);
+    dds_qset_prop(qos, (prefix + "finalize").c_str(), p.finalize);
+  }
+  dds_qset_prop(qos, "dds.sec.auth.identity_ca", file_uri(id.identity_ca()).c_str());
+  dds_qset_prop(qos, "dds.sec.auth.identity_certificate", file_uri(id.certificate()).c_str());
+  dds_qset_prop(qos, "dds.sec.auth.private_key", file_uri(id.private_key()).c_str());
+  dds_qset_prop(qos, "dds.sec.access.permissions_ca", file_uri(id.permissions_ca()).c_str());
+  dds_qset_prop(qos, "dds.sec.access.governance", file_uri(id.governance()).c_str());
+  dds_qset_prop(qos, "dds.sec.access.permissions", file_uri(id.permissions()).c_str());
+}
+
+}  // namespace stride::remote::dds
+
+namespace stride::remote {
+
+namespace {
+std::atomic<identity_check> g_identity_check{nullptr};
+}  // namespace
+
+void set_identity_check(identity_check check) {
+  g_identity_check.store(check);
+}
+
+void dds::check_identity(const std::filesystem::path& identity, int domain) {
+  if (const identity_check check = g_identity_check.load()) check(identity, domain);
+}
+
+std::filesystem::path effective_identity(const dds_settings& settings) {
+  if (!settings.security.empty()) return settings.security;
+  const char* env = std::getenv(k_security_env);
+  return env != nullptr ? std::filesystem::path(env) : std::filesystem::path();
+}
+
+}  // namespace stride::remote
