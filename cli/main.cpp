@@ -16,6 +16,7 @@
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/remote/keystore.hpp"
+#include "stride/remote/refused_peers.hpp"
 #include "stride/remote/settings.hpp"
 #include "stride/study/run_hooks.hpp"
 #include "stride/study/suite_assertions.hpp"
@@ -169,6 +170,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   // every DDS participant of this process checks its identity first (docs/distributed.md)
   stride::remote::set_identity_check(&stride::remote::keystore::check_identity);
+  // a DDS Security handshake that fails is said once per peer (a worker says it in its log)
+  stride::remote::refused_peer_log refused_peers(
+      [](const std::string& line) { std::fprintf(stderr, "stride: %s\n", line.c_str()); });
 
   try {
     if (*run) {

@@ -10,21 +10,39 @@
 #     time, and the ratio; and with gait and robot on one worker stepping as a group
 #     (models/distributed/walk-on-one-worker.xml) against the two on two workers (two requests
 #     per step, one after the other).
-# usage: bench/remote/remote_step.sh [REPEAT] [BUILD_DIR] [DOMAIN]   (defaults 5, build/, 90)
+#  3. The start-up of a run with b on a worker (the 2 000-step run less its 2 000 steps): joining
+#     the domain, finding the worker, shipping the FMU; with SECURITY, the DDS Security
+#     handshakes too.
+# SECURITY: none (default), sign or encrypt: workers and runs with identities of a keystore made
+# with that protection (docs/distributed.md).
+# usage: bench/remote/remote_step.sh [REPEAT] [BUILD_DIR] [DOMAIN] [SECURITY]
+#        (defaults 5, build/, 90, none)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 repeat="${1:-5}"
 build="${2:-$root/build}"
 domain="${3:-90}"
+security="${4:-none}"
 stride="$build/bin/stride"
 [ -x "$stride" ] || { echo "remote_step: $stride not found (build first)" >&2; exit 1; }
 out="$(mktemp -d)"
 worker=""
 trap '[ -n "$worker" ] && kill -TERM $worker 2>/dev/null; wait; rm -rf "$out"' EXIT
 
-"$stride" worker --name w1 --domain "$domain" > "$out/worker.log" 2>&1 &
+w1_args=() w2_args=() run_args=(--domain "$domain")
+case "$security" in
+  none) ;;
+  sign | encrypt)
+    "$stride" security init "$out/ks" --domains "$domain" --protection "$security" > /dev/null
+    for id in w1 w2 orchestrator; do "$stride" security add "$out/ks" "$id" > /dev/null; done
+    w1_args=(--security "$out/ks/w1") w2_args=(--security "$out/ks/w2")
+    run_args+=(--security "$out/ks/orchestrator") ;;
+  *) echo "remote_step: SECURITY is none, sign or encrypt, not '$security'" >&2; exit 1 ;;
+esac
+echo "security: $security"
+"$stride" worker --name w1 --domain "$domain" "${w1_args[@]}" > "$out/worker.log" 2>&1 &
 worker=$!
-"$stride" worker --name w2 --domain "$domain" > "$out/worker2.log" 2>&1 &
+"$stride" worker --name w2 --domain "$domain" "${w2_args[@]}" > "$out/worker2.log" 2>&1 &
 worker="$worker $!"
 for log in worker worker2; do
   for _ in $(seq 100); do grep -q ready "$out/$log.log" && break; sleep 0.1; done
@@ -56,12 +74,12 @@ timed() {  # LABEL SYSTEM ARGS...: appends "LABEL seconds" to times.txt
 for ((i = 1; i <= repeat; ++i)); do
   for steps in 2000 20000; do
     timed "local-$steps" "$out/local-$steps.xml"
-    timed "remote-$steps" "$out/remote-$steps.xml" --domain "$domain"
+    timed "remote-$steps" "$out/remote-$steps.xml" "${run_args[@]}"
   done
   timed walk-local "$root/models/walk.xml"
-  timed walk-remote "$root/models/distributed/walk-robot-on-worker.xml" --domain "$domain"
-  timed walk-group "$root/models/distributed/walk-on-one-worker.xml" --domain "$domain"
-  timed walk-split "$out/walk-split.xml" --domain "$domain"
+  timed walk-remote "$root/models/distributed/walk-robot-on-worker.xml" "${run_args[@]}"
+  timed walk-group "$root/models/distributed/walk-on-one-worker.xml" "${run_args[@]}"
+  timed walk-split "$out/walk-split.xml" "${run_args[@]}"
   echo "round $i of $repeat done" >&2
 done
 
@@ -78,6 +96,9 @@ for kind in ("local", "remote"):
     s = per_step(kind)
     print(f"pair, b {'on a worker' if kind == 'remote' else 'in process'}: "
           f"{med(s):.1f} us per step (min {min(s):.1f}, max {max(s):.1f}, n={len(s)})")
+up = [t2000 - 2000 * s * 1e-6 for t2000, s in zip(t["remote-2000"], per_step("remote"))]
+print(f"start-up of a run with b on a worker: {med(up) * 1e3:.0f} ms "
+      f"(min {min(up) * 1e3:.0f}, max {max(up) * 1e3:.0f})")
 for kind in ("local", "remote"):
     s = t[f"walk-{kind}"]
     print(f"60 s walk, robot {'on a worker' if kind == 'remote' else 'in process'}: median "

@@ -2,7 +2,7 @@
 #ifndef STRIDE_COSIM_RUN_FILES_HPP
 #define STRIDE_COSIM_RUN_FILES_HPP
 
-#include <ctime>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "stride/common/files.hpp"
+#include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim {
@@ -54,12 +55,7 @@ inline std::string json_number(double d) {
 }
 
 inline std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
+  return text::utc_text(std::chrono::system_clock::now(), "%Y-%m-%dT%H:%M:%SZ");
 }
 
 /// Creates the output folder `dir` (and its parents). \throws error naming it and the reason.

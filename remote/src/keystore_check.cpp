@@ -2,10 +2,10 @@
 // and what to do, where Cyclone's own refusal would only say that the participant failed.
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <stdexcept>
 #include <string>
 
+#include "keystore_io.hpp"
 #include "stride/remote/identity.hpp"
 #include "stride/remote/keystore.hpp"
 
@@ -15,23 +15,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string utc(std::chrono::system_clock::time_point t) {
-  const std::time_t s = std::chrono::system_clock::to_time_t(t);
-  std::tm tm{};
-  gmtime_r(&s, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", &tm);
-  return text;
-}
-
 void check_times(const fs::path& cert, const certificate_info& info) {
   const auto now = std::chrono::system_clock::now();
   if (now < info.not_before) {
     throw std::runtime_error("certificate " + cert.string() + " is not valid before " +
-                             utc(info.not_before) + ": wait, or check this host's clock");
+                             io::date(info.not_before) + ": wait, or check this host's clock");
   }
   if (now > info.not_after) {
-    throw std::runtime_error("certificate " + cert.string() + " expired on " + utc(info.not_after) +
+    throw std::runtime_error("certificate " + cert.string() + " expired on " +
+                             io::date(info.not_after) +
                              ": make a new identity with `stride security add KEYSTORE NAME`");
   }
 }

@@ -3,9 +3,10 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
-#include <ctime>
 #include <set>
 #include <stdexcept>
+
+#include "stride/common/text.hpp"
 
 namespace stride::remote::keystore {
 namespace {
@@ -205,12 +206,7 @@ std::string permissions_xml(const grant& g) {
 }
 
 std::string xml_date(std::chrono::system_clock::time_point t) {
-  const std::time_t seconds = std::chrono::system_clock::to_time_t(t);
-  std::tm utc{};
-  gmtime_r(&seconds, &utc);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%S", &utc);
-  return buffer;
+  return text::utc_text(t, "%Y-%m-%dT%H:%M:%S");
 }
 
 std::vector<int> permissions_domains(const std::string& xml) {

@@ -6,9 +6,10 @@
 
 #include <cerrno>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <sstream>
+
+#include "stride/common/text.hpp"
 
 namespace stride::remote::keystore::io {
 
@@ -60,12 +61,7 @@ void make_directory(const fs::path& dir, mode_t mode) {
 }
 
 std::string date(sys_clock::time_point t) {
-  const std::time_t seconds = sys_clock::to_time_t(t);
-  std::tm utc{};
-  gmtime_r(&seconds, &utc);
-  char buffer[40];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M:%S UTC", &utc);
-  return buffer;
+  return text::utc_text(t, "%Y-%m-%d %H:%M:%S UTC");
 }
 
 }  // namespace stride::remote::keystore::io

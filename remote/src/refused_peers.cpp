@@ -1,4 +1,4 @@
-#include "refused_peers.hpp"
+#include "stride/remote/refused_peers.hpp"
 
 #include <dds/dds.h>
 #include <dds/ddsrt/log.h>
@@ -19,8 +19,11 @@ std::string_view between(std::string_view text, std::string_view from, std::stri
 void sink(void* self, const dds_log_data_t* data) {
   const std::string_view message(data->message, data->size);
   const std::string line = static_cast<refused_peer_log*>(self)->refusal(message);
+  // Cyclone's trace (stderr unless configured otherwise) also has every handshake failure; the
+  // other messages are written as the default sink would
   if (line.empty() && message.find("handshake") == std::string_view::npos) {
     std::fwrite(data->message, 1, data->size, stderr);
+    if (!message.ends_with('\n')) std::fputc('\n', stderr);
     std::fflush(stderr);
   }
 }

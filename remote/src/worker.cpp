@@ -14,7 +14,7 @@
 #include "dds.hpp"
 #include "hosted.hpp"
 #include "protocol.hpp"
-#include "refused_peers.hpp"
+#include "stride/remote/refused_peers.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/run.hpp"

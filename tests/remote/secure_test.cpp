@@ -131,6 +131,15 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
           "--domain 101 --worker-timeout 3 --security " + quoted(other / "orchestrator"));
   EXPECT_NE(foreign.exit_code, 0);
   EXPECT_THAT(foreign.err, HasSubstr("worker 'w1' did not appear on DDS domain 101"));
+  // The side that answers the handshake (DDS picks it by the participants' ids) says once whom
+  // it refused and why: the worker in its log, or the run on stderr.
+  const std::string log = w.output();
+  const bool worker_said = log.find("refused peer ") != std::string::npos;
+  const std::string said = worker_said ? log : foreign.err;
+  EXPECT_THAT(said, AllOf(HasSubstr(worker_said ? "CN=orchestrator" : "CN=w1"),
+                          HasSubstr("unable to get local issuer")))
+      << log << foreign.err;
+  EXPECT_EQ(said.find("refused peer "), said.rfind("refused peer ")) << said;
   const auto expired = run(system, "expired", "--domain 101 --security " + quoted(ks / "expired"));
   EXPECT_NE(expired.exit_code, 0);
   EXPECT_THAT(expired.err,

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <charconv>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -158,6 +160,15 @@ inline std::string xml_escape(std::string_view s) {
     }
   }
   return out;
+}
+
+/// `t` in UTC as strftime's `format` writes it (e.g. "%Y-%m-%dT%H:%M:%SZ").
+inline std::string utc_text(std::chrono::system_clock::time_point t, const char* format) {
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(t);
+  std::tm utc{};
+  gmtime_r(&seconds, &utc);
+  char buffer[64];
+  return std::string(buffer, std::strftime(buffer, sizeof buffer, format, &utc));
 }
 
 }  // namespace stride::text
