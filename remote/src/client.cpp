@@ -109,11 +109,16 @@ dds_entity_t client::connect(const std::string& worker) {
   const auto seconds = std::to_string(limits_.connect.count() / 1000.0);
   while (announcement_of(worker) == 0) {
     if (clock::now() >= until) {
+      // a worker behind DDS Security is invisible to a run it does not trust, and the other way
+      const std::string security =
+          effective_identity(settings_).empty()
+              ? "; a worker with --security is out of reach of a run without it"
+              : "; with --security, the worker's identity must come from the same keystore";
       throw std::runtime_error("worker '" + worker + "' did not appear on DDS domain " +
                                std::to_string(settings_.domain) + " within " +
                                seconds.substr(0, seconds.find('.') + 2) +
                                " s (start it with `stride worker --name " + worker + " --domain " +
-                               std::to_string(settings_.domain) + "`)");
+                               std::to_string(settings_.domain) + "`" + security + ")");
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }

@@ -19,9 +19,13 @@ dds_return_t check(dds_return_t rc, const std::string& what) {
 
 namespace {
 
-// the configuration text each domain of this process was set up with
+// the configuration text and identity each domain of this process was set up with
+struct domain_setup {
+  std::string config;
+  fs::path identity;
+};
 std::mutex g_domains_mutex;
-std::map<int, std::string> g_domains;
+std::map<int, domain_setup> g_domains;
 
 std::string config_text(const dds_settings& s) {
   if (!s.config_file.empty()) {
@@ -36,55 +40,81 @@ std::string config_text(const dds_settings& s) {
 
 }  // namespace
 
+namespace {
+
+// sets the domain up with the settings' configuration, once per process
+void set_up_domain(const dds_settings& settings, const fs::path& identity) {
+  const std::string config = config_text(settings);
+  std::lock_guard lock(g_domains_mutex);
+  const auto it = g_domains.find(settings.domain);
+  if (it != g_domains.end()) {
+    if (it->second.config != config) {
+      throw std::runtime_error("DDS domain " + std::to_string(settings.domain) +
+                               " is already set up with another configuration in this process");
+    }
+    if (it->second.identity != identity) {
+      throw std::runtime_error("DDS domain " + std::to_string(settings.domain) +
+                               " is already joined with another security identity in this "
+                               "process");
+    }
+    return;
+  }
+  if (!config.empty()) {
+    // the domain entity lives as long as the process: participants come and go on it
+    const dds_entity_t domain =
+        dds_create_domain(static_cast<dds_domainid_t>(settings.domain), config.c_str());
+    // Already set up: by the process hosting this code (an FMU that links this layer and runs
+    // inside a stride process or worker); its configuration applies.
+    if (domain != DDS_RETCODE_PRECONDITION_NOT_MET) {
+      check(domain, "cannot set up DDS domain " + std::to_string(settings.domain));
+    }
+  }
+  g_domains[settings.domain] = {config, identity};
+}
+
+dds_entity_t create_participant(int domain, const fs::path& identity) {
+  if (identity.empty()) {
+    return check(dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr),
+                 "cannot join DDS domain " + std::to_string(domain));
+  }
+  dds_qos_t* qos = dds_create_qos();
+  try {
+    add_security(qos, identity);
+    check_identity(identity, domain);
+  } catch (...) {
+    dds_delete_qos(qos);
+    throw;
+  }
+  const dds_entity_t p = dds_create_participant(static_cast<dds_domainid_t>(domain), qos, nullptr);
+  dds_delete_qos(qos);
+  // Cyclone's log (stderr) has said which file or check failed
+  return check(p, "cannot join DDS domain " + std::to_string(domain) +
+                      " with the security identity " + identity.string() +
+                      " (see the DDS messages above and `stride security show " +
+                      identity.string() + "`)");
+}
+
+}  // namespace
+
 entity make_participant(const dds_settings& settings) {
   if (settings.domain < 0 || settings.domain > 230) {
     // the port numbers Cyclone derives from the domain run out above 232
     throw std::runtime_error("DDS domain " + std::to_string(settings.domain) +
                              " is out of range (0..230)");
   }
-  const std::string config = config_text(settings);
-  {
-    std::lock_guard lock(g_domains_mutex);
-    const auto it = g_domains.find(settings.domain);
-    if (it == g_domains.end()) {
-      if (!config.empty()) {
-        // the domain entity lives as long as the process: participants come and go on it
-        const dds_entity_t domain =
-            dds_create_domain(static_cast<dds_domainid_t>(settings.domain), config.c_str());
-        // Already set up: by the process hosting this code (an FMU that links this layer and
-        // runs inside a stride process or worker); its configuration applies.
-        if (domain != DDS_RETCODE_PRECONDITION_NOT_MET) {
-          check(domain, "cannot set up DDS domain " + std::to_string(settings.domain));
-        }
-      }
-      g_domains[settings.domain] = config;
-    } else if (it->second != config) {
-      throw std::runtime_error("DDS domain " + std::to_string(settings.domain) +
-                               " is already set up with another configuration in this process");
-    }
-  }
   const fs::path identity = effective_identity(settings);
-  if (identity.empty()) {
-    return entity(check(
-        dds_create_participant(static_cast<dds_domainid_t>(settings.domain), nullptr, nullptr),
-        "cannot join DDS domain " + std::to_string(settings.domain)));
+  set_up_domain(settings, identity);
+  // One participant per process and domain, found through DDS so that FMUs linking their own copy
+  // of this layer share it too: a pair of processes then makes one DDS Security handshake, and
+  // Cyclone 0.10's security plugins leak memory on every message when a process has several
+  // secure participants (RELIABILITY.md).
+  static std::mutex creating;
+  std::lock_guard lock(creating);
+  dds_entity_t existing[1] = {};
+  if (dds_lookup_participant(static_cast<dds_domainid_t>(settings.domain), existing, 1) > 0) {
+    return entity::borrowed(existing[0]);
   }
-  dds_qos_t* qos = dds_create_qos();
-  try {
-    add_security(qos, identity);
-    check_identity(identity, settings.domain);
-  } catch (...) {
-    dds_delete_qos(qos);
-    throw;
-  }
-  const dds_entity_t p =
-      dds_create_participant(static_cast<dds_domainid_t>(settings.domain), qos, nullptr);
-  dds_delete_qos(qos);
-  // Cyclone's log (stderr) has said which file or check failed
-  return entity(check(p, "cannot join DDS domain " + std::to_string(settings.domain) +
-                             " with the security identity " + identity.string() +
-                             " (see the DDS messages above and `stride security show " +
-                             identity.string() + "`)"));
+  return entity::borrowed(create_participant(settings.domain, identity));
 }
 
 }  // namespace stride::remote::dds

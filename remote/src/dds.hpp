@@ -15,39 +15,51 @@
 
 namespace stride::remote::dds {
 
-/// A DDS entity deleted (with its children) when this goes away.
+/// A DDS entity deleted (with its children) when this goes away, unless it is borrowed.
 class entity {
  public:
   entity() = default;
   explicit entity(dds_entity_t e) : e_(e) {}
+  /// An entity someone else deletes (the process's shared participant).
+  static entity borrowed(dds_entity_t e) {
+    entity b(e);
+    b.owned_ = false;
+    return b;
+  }
   ~entity() { reset(); }
   entity(const entity&) = delete;
   entity& operator=(const entity&) = delete;
-  entity(entity&& o) noexcept : e_(std::exchange(o.e_, 0)) {}
+  entity(entity&& o) noexcept : e_(std::exchange(o.e_, 0)), owned_(std::exchange(o.owned_, true)) {}
   entity& operator=(entity&& o) noexcept {
     if (this != &o) {
       reset();
       e_ = std::exchange(o.e_, 0);
+      owned_ = std::exchange(o.owned_, true);
     }
     return *this;
   }
   dds_entity_t get() const noexcept { return e_; }
   explicit operator bool() const noexcept { return e_ > 0; }
   void reset() noexcept {
-    if (e_ > 0) dds_delete(e_);
+    if (e_ > 0 && owned_) dds_delete(e_);
     e_ = 0;
+    owned_ = true;
   }
 
  private:
   dds_entity_t e_ = 0;
+  bool owned_ = true;
 };
 
 /// Throws std::runtime_error with `what` and DDS's text for `rc` when `rc` is negative.
 dds_return_t check(dds_return_t rc, const std::string& what);
 
-/// The participant of this process on the settings' domain. The first call in a process sets the
-/// domain up (the configuration file, else CYCLONEDDS_URI, else the loopback configuration);
-/// later calls with another configuration for the same domain are an error.
+/// The participant of this process on the settings' domain, borrowed: every caller in the
+/// process shares one (FMUs that link this layer included), and it lives until close_dds(). Its
+/// users delete the entities they make under it. The first call in a process sets the domain up
+/// (the configuration file, else CYCLONEDDS_URI, else the loopback configuration) and creates the
+/// participant with the process's security identity; later calls with another configuration or
+/// identity for the same domain are an error.
 entity make_participant(const dds_settings& settings);
 
 /// QoS of the request and reply paths: reliable, every sample kept until delivered.

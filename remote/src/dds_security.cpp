@@ -110,9 +110,13 @@ void dds::check_identity(const std::filesystem::path& identity, int domain) {
 }
 
 std::filesystem::path effective_identity(const dds_settings& settings) {
-  if (!settings.security.empty()) return settings.security;
-  const char* env = std::getenv(k_security_env);
-  return env != nullptr ? std::filesystem::path(env) : std::filesystem::path();
+  std::filesystem::path p = settings.security;
+  if (p.empty()) {
+    const char* env = std::getenv(k_security_env);
+    if (env == nullptr || *env == '\0') return {};
+    p = env;
+  }
+  return std::filesystem::absolute(p).lexically_normal();  // one spelling per identity
 }
 
 }  // namespace stride::remote

@@ -125,12 +125,14 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
 
   const auto none = run(system, "none", "--domain 101 --worker-timeout 3");
   EXPECT_NE(none.exit_code, 0);
-  EXPECT_THAT(none.err, HasSubstr("worker 'w1' did not appear on DDS domain 101"));
+  EXPECT_THAT(none.err, AllOf(HasSubstr("worker 'w1' did not appear on DDS domain 101"),
+                              HasSubstr("out of reach of a run without it")));
   const auto foreign =
       run(system, "foreign",
           "--domain 101 --worker-timeout 3 --security " + quoted(other / "orchestrator"));
   EXPECT_NE(foreign.exit_code, 0);
-  EXPECT_THAT(foreign.err, HasSubstr("worker 'w1' did not appear on DDS domain 101"));
+  EXPECT_THAT(foreign.err, AllOf(HasSubstr("worker 'w1' did not appear on DDS domain 101"),
+                                 HasSubstr("must come from the same keystore")));
   // The side that answers the handshake (DDS picks it by the participants' ids) says once whom
   // it refused and why: the worker in its log, or the run on stderr.
   const std::string log = w.output();
@@ -154,6 +156,30 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
       run(system, "proper", "--domain 101 --security " + quoted(ks / "orchestrator"));
   ASSERT_EQ(proper.exit_code, 0) << proper.err << w.output();
   EXPECT_THAT(w.output(), HasSubstr("loaded stride_test"));
+}
+
+// `stride test --security` hands the identity to the processes of its cases. Case runs use DDS
+// domain 0, so the worker has a name no other test uses.
+TEST_F(secure_remote, a_suite_case_reaches_a_secure_worker_through_test_security) {
+  const fs::path ks = keystore("ks", {"worker", "tester"}, "0");
+  const std::string name = "secure-suite-" + std::to_string(::getpid());
+  auto w = worker_process(k_cli, name, 0, scratch.path() / "w.log",
+                          {"--security", (ks / "worker").string()});
+  ASSERT_TRUE(w.ready()) << w.output();
+  std::string xml = read(pair_on_w1());
+  xml.replace(xml.find("worker=\"w1\""), 11, "worker=\"" + name + "\"");
+  std::ofstream(scratch.path() / "pair.xml", std::ios::binary) << xml;
+  std::ofstream(scratch.path() / "suite.xml")
+      << "<suite name=\"secure\" version=\"1\"><case name=\"pair\" system=\"pair.xml\">"
+         "<bounds signal=\"b.y\" min=\"-1e9\" max=\"1e9\"/></case></suite>";
+  const std::string test = "'" + k_cli + "' test " + quoted(scratch.path() / "suite.xml");
+  const auto secure = run_command(test + " --output " + quoted(scratch.path() / "secure") +
+                                      " --security " + quoted(ks / "tester"),
+                                  scratch.path());
+  EXPECT_EQ(secure.exit_code, 0) << secure.out << secure.err << w.output();
+  const auto plain =
+      run_command(test + " --output " + quoted(scratch.path() / "plain"), scratch.path());
+  EXPECT_NE(plain.exit_code, 0) << plain.out;  // without an identity the worker is out of reach
 }
 
 TEST_F(secure_remote, an_identity_with_a_key_others_can_read_or_a_missing_file_is_named) {
