@@ -119,6 +119,9 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
   old.valid_days = 1;
   old.not_before = std::chrono::system_clock::now() - std::chrono::hours(24 * 10);
   keystore::add(ks, "expired", old);
+  keystore::identity_options early;
+  early.not_before = std::chrono::system_clock::now() + std::chrono::hours(48);
+  keystore::add(ks, "early", early);
   auto w = start_worker("w1", 101, {"--security", (ks / "w1").string()});
   ASSERT_TRUE(w.ready()) << w.output();
   const fs::path system = pair_on_w1();
@@ -146,6 +149,10 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
   EXPECT_NE(expired.exit_code, 0);
   EXPECT_THAT(expired.err,
               AllOf(HasSubstr((ks / "expired" / "cert.pem").string()), HasSubstr("expired")));
+  const auto not_yet = run(system, "early", "--domain 101 --security " + quoted(ks / "early"));
+  EXPECT_NE(not_yet.exit_code, 0);
+  EXPECT_THAT(not_yet.err, AllOf(HasSubstr((ks / "early" / "cert.pem").string()),
+                                 HasSubstr("is not valid before")));
   const auto domain =
       run(system, "domain", "--domain 101 --security " + quoted(elsewhere / "orchestrator"));
   EXPECT_NE(domain.exit_code, 0);
