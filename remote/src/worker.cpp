@@ -14,10 +14,10 @@
 #include "dds.hpp"
 #include "hosted.hpp"
 #include "protocol.hpp"
-#include "stride/remote/refused_peers.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/run.hpp"
+#include "stride/remote/refused_peers.hpp"
 
 namespace stride::remote {
 
