@@ -7,6 +7,7 @@
 #include "stride/calibration/calibrate.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/log.hpp"
+#include "stride/cosim/system_import.hpp"
 #include "stride/cosim/system_structure.hpp"
 #include "stride/gait/config_ini.hpp"
 
@@ -90,7 +91,7 @@ int calibrate(const calibrate_arguments& a) {
   if (a.mode == "plant") {
     const cal::plant_target target = cal::read_plant_target(a.target);
     cal::plant_options plant;
-    if (!a.system.empty()) plant.system = cosim::parse_system_file(a.system);
+    if (!a.system.empty()) plant.system = cosim::load_system_file(a.system);
     plant.log = cosim::stderr_log_sink(cosim::log_level::warning);
     report = cal::fit_plant_posture(target, start, options, plant);
   } else {

@@ -13,6 +13,7 @@
 #include "stride/cosim/model_description.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_builder.hpp"
+#include "stride/cosim/system_import.hpp"
 #include "stride/cosim/system_structure.hpp"
 #include "stride/remote/remote_placement.hpp"
 #include "stride/suite/runner.hpp"
@@ -37,11 +38,32 @@ cosim::time_point parse_stop(const std::string& text) {
   }
 }
 
-system_structure load_system(const std::optional<fs::path>& file, const run_extension& ext) {
-  if (file) return parse_system_file(*file);
+system_structure load_system(const std::optional<fs::path>& file, const run_extension& ext,
+                             const log_sink& log) {
+  if (file) return load_system_file(*file, log);
   if (ext.default_system_xml.empty()) throw validation_error("no system file given");
   return parse_system_text(ext.default_system_xml,
                            "(embedded) " + std::string(ext.default_system_name));
+}
+
+// --step and --algorithm: the base step and master algorithm, whatever the system says
+void apply_stepping(system_structure& system, const std::optional<std::string>& step,
+                    const std::optional<std::string>& algorithm) {
+  if (step) {
+    try {
+      system.base_step = parse_duration(*step);
+    } catch (const std::exception& e) {
+      throw validation_error(std::string("--step: ") + e.what());
+    }
+    if (*system.base_step <= duration::zero()) throw validation_error("--step must be positive");
+  }
+  if (algorithm) {
+    if (*algorithm != "gauss-seidel" && *algorithm != "jacobi") {
+      throw validation_error("--algorithm " + *algorithm + ": not gauss-seidel or jacobi");
+    }
+    system.algorithm =
+        *algorithm == "jacobi" ? algorithm_kind::jacobi : algorithm_kind::gauss_seidel;
+  }
 }
 
 const char* yes_no(bool b) {
@@ -72,7 +94,7 @@ bool has_workers(const system_structure& system) {
 }
 
 int inspect_system(const fs::path& file) {
-  const system_structure system = parse_system_file(file);
+  const system_structure system = load_system_file(file);
   const system_structure expanded = expand_replicas(system);
   std::printf("System '%s' (%s): %zu components, %zu connections, %s\n\n", system.name.c_str(),
               file.string().c_str(), expanded.components.size(), expanded.connections.size(),
@@ -142,7 +164,8 @@ int run(const run_arguments& args, const run_extension& extension) {
     if (!system_file) system_file = args.resume / "system.xml";
     if (!args.output.empty()) throw validation_error("--resume and --output exclude each other");
   }
-  system_structure system = load_system(system_file, extension);
+  system_structure system = load_system(system_file, extension, options.build.log);
+  apply_stepping(system, args.step, args.algorithm);
   if (!options.resume_dir.empty() && system.agents.count == 0 &&
       !fs::exists(checkpoint_file(options.resume_dir))) {
     // starting over: the results of the interrupted run stay as they are
@@ -324,11 +347,13 @@ int inspect(const fs::path& file) {
 int validate(const validate_arguments& args) {
   const bool is_fmu = args.file.extension() == ".fmu";
   if (!is_fmu) {
-    system_structure system = parse_system_file(args.file);
+    const log_sink log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
+    system_structure system = load_system_file(args.file, log);
+    apply_stepping(system, args.step, args.algorithm);
     for (const auto& s : args.sets) apply_override(system, s);
     if (args.stop_time) system.stop = parse_stop(*args.stop_time);
     build_options options;
-    options.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
+    options.log = log;
     // components placed on workers are checked here with the same FMU: validation needs no
     // worker to be running
     system_structure local = system;

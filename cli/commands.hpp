@@ -19,6 +19,8 @@ namespace stride::cli {
 struct run_arguments {
   std::optional<std::filesystem::path> system;  ///< nullopt = embedded default scenario
   std::optional<std::string> stop_time;
+  std::optional<std::string> step;       ///< --step: replaces the system's base step
+  std::optional<std::string> algorithm;  ///< --algorithm: replaces its master algorithm
   std::filesystem::path output;
   std::vector<std::string> sets;
   bool quiet = false;
@@ -40,6 +42,8 @@ struct run_arguments {
 struct validate_arguments {
   std::filesystem::path file;
   std::optional<std::string> stop_time;
+  std::optional<std::string> step;       ///< as for run
+  std::optional<std::string> algorithm;  ///< as for run
   std::vector<std::string> sets;
   bool quiet = false;
 };

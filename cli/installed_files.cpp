@@ -13,7 +13,8 @@ CLI::Validator existing_or_installed_model() {
   return CLI::Validator(
       [](std::string& file) -> std::string {
         std::error_code error;
-        if (fs::is_regular_file(file, error)) return {};
+        // a folder may be a system (an SSP's); the system reader says when it is not
+        if (fs::is_regular_file(file, error) || fs::is_directory(file, error)) return {};
         if (fs::exists(file, error)) return "Not a regular file: " + file;
         const fs::path data = cosim::installed_data_dir();
         if (fs::path(file).is_relative() && !data.empty()) {

@@ -42,10 +42,14 @@ int main(int argc, char** argv) {
       "Run a system (no SYSTEM.xml: the built-in demo, Experiment 1 of the gait-parameter "
       "learner at demo scale, models/experiments/demo.xml)");
   run->add_option("system", system_file,
-                  "System XML file (a relative name not found here is looked up in the installed "
-                  "models, share/stride/models)")
+                  "System XML file, or an SSP (.ssp, a folder with SystemStructure.ssd, .ssd) or "
+                  "OspSystemStructure.xml (docs/ssp.md); a relative name not found here is looked "
+                  "up in the installed models, share/stride/models")
       ->transform(stride::cli::existing_or_installed_model());
   run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
+  std::string step, algorithm;
+  run->add_option("--step", step, "Base step in seconds (replaces the system's)");
+  run->add_option("--algorithm", algorithm, "gauss-seidel or jacobi (replaces the system's)");
   run->add_option("--output,-o", run_args.output,
                   "Output folder (default ./stride-out/<system>-<YYYYmmdd-HHMMSS>); an existing "
                   "one must be empty, unless --force");
@@ -109,9 +113,9 @@ int main(int argc, char** argv) {
   std::string inspect_file;
   auto* inspect = app.add_subcommand(
       "inspect", "Show an FMU's model description, or where a system's components run");
-  inspect->add_option("file", inspect_file, "FMU file or system XML")
+  inspect->add_option("file", inspect_file, "FMU file or system (XML, SSP, OSP)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingPath);
 
   stride::cli::test_arguments test_args;
   std::string suite_file;
@@ -138,10 +142,13 @@ int main(int argc, char** argv) {
       "validate",
       "Check an FMU (static checks, import, instantiate) or a system XML (parse, "
       "build, validate; nothing is run)");
-  validate->add_option("file", validate_file, "FMU or system XML file")
+  validate->add_option("file", validate_file, "FMU or system (XML, SSP, OSP)")
       ->required()
       ->transform(stride::cli::existing_or_installed_model());
   validate->add_option("--stop-time", validate_stop, "Stop time in seconds for a system");
+  std::string validate_step, validate_algorithm;
+  validate->add_option("--step", validate_step, "Base step in seconds for a system");
+  validate->add_option("--algorithm", validate_algorithm, "gauss-seidel or jacobi, for a system");
   validate->add_option("--set", validate_args.sets, "comp.var=value, as for run")
       ->allow_extra_args(false);
   validate->add_flag("--quiet,-q", validate_args.quiet, "Print only problems");
@@ -178,6 +185,8 @@ int main(int argc, char** argv) {
     if (*run) {
       if (!system_file.empty()) run_args.system = system_file;
       if (!stop_time.empty()) run_args.stop_time = stop_time;
+      if (!step.empty()) run_args.step = step;
+      if (!algorithm.empty()) run_args.algorithm = algorithm;
       if (!record_interval.empty()) run_args.record_interval = record_interval;
       if (record_view) {
         // the viewer's preset: its signals at about 30 frames a second, beside the results
@@ -223,6 +232,8 @@ int main(int argc, char** argv) {
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;
+      if (!validate_step.empty()) validate_args.step = validate_step;
+      if (!validate_algorithm.empty()) validate_args.algorithm = validate_algorithm;
       return stride::cli::validate(validate_args);
     }
   } catch (const std::exception& e) {

@@ -23,6 +23,7 @@
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/fmu.hpp"
 #include "stride/cosim/system_builder.hpp"
+#include "stride/cosim/system_import.hpp"
 #include "stride/cosim/time.hpp"
 #include "stride/remote/remote_placement.hpp"
 #include "workers.hpp"
@@ -370,7 +371,7 @@ std::vector<sweep_point> sweep_points(const std::vector<sweep_target>& targets) 
 int sweep(const sweep_arguments& args, const sweep_extension& extension) {
   // --- everything that can be wrong with the arguments, before anything runs
   if (args.grids.empty()) throw validation_error("--grid: give at least one");
-  cosim::system_structure system = cosim::parse_system_file(args.system);
+  cosim::system_structure system = cosim::load_system_file(args.system);
   std::vector<sweep_target> targets;
   for (const auto& g : args.grids) {
     targets.push_back(parse_sweep_grid(g));
@@ -673,7 +674,9 @@ CLI::App* add_sweep_command(CLI::App& app, sweep_extension extension) {
       "Run a system once per point of a parameter grid, on threads of this process (or on "
       "workers), into DIR/points/<values>/ and one CSV (and, for a 2-D grid, a heat map); "
       "points already run are kept, so an interrupted sweep continues (docs/sweep.md)");
-  cmd->add_option("system", args->system, "System XML file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("system", args->system, "System file (XML, SSP or OSP)")
+      ->required()
+      ->check(CLI::ExistingPath);
   cmd->add_option("--grid", args->grids,
                   "comp.var=name:min:max:step[,name:min:max:step...]: the variable takes each "
                   "grid point's values joined by ',' (one unnamed axis: comp.var=min:max:step); "

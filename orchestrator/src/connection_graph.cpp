@@ -130,7 +130,13 @@ void validate_connections(const component_declarations& d,
                              std::string(to_string(from.type)) + " but " + d.full_name(c.to) +
                              " is " + std::string(to_string(to.type)));
     }
-    if (!from.unit.empty() && !to.unit.empty() && from.unit != to.unit) {
+    if (c.options.transforms() && exchange_type(from.type) != variable_type::real) {
+      throw validation_error(p + what + ": a linear transformation (factor, offset) applies to " +
+                             "Real variables only, " + d.full_name(c.from) + " is " +
+                             std::string(to_string(from.type)));
+    }
+    // a transformed connection converts on purpose (e.g. the units of an SSP connection)
+    if (!c.options.transforms() && !from.unit.empty() && !to.unit.empty() && from.unit != to.unit) {
       if (log)
         log(log_level::warning, "stride", "",
             p + what + ": unit mismatch, '" + from.unit + "' -> '" + to.unit +

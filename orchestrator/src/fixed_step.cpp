@@ -1,10 +1,12 @@
 // The fixed-step master algorithm: value caches per component, wiring of connections to inputs,
 // initialization, and the macro step (sequential, or spread over threads by a step_plan).
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <thread>
 
 #include "state_bytes.hpp"
+#include "stride/common/text.hpp"
 #include "stride/cosim/algorithm.hpp"
 #include "stride/cosim/error.hpp"
 #include "task_runner.hpp"
@@ -32,6 +34,12 @@ struct source {
   std::size_t component = 0;
   std::size_t slot = 0;
   bool previous = false;  // reads the previous communication point (delayed or Jacobi)
+  // a Real connection's linear transformation (skipped when off: untransformed values stay
+  // bit for bit what the source gave)
+  bool transformed = false;
+  double factor = 1.0;
+  double offset = 0.0;
+  std::size_t connection = 0;  // index into the wiring's connections, for messages
 };
 
 // inputs of one component with their sources, one list per type (parallel to `refs`)
@@ -116,14 +124,16 @@ class fixed_step_algorithm::impl {
 
   // the input slot the connection feeds, in the lane of its type
   template <class T>
-  std::size_t add_input(input_wiring& w, const connection& c, std::size_t slot) {
+  std::size_t add_input(input_wiring& w, const connection& c, std::size_t slot, std::size_t index) {
     lane<T>(w.refs).push_back(var(c.to).reference);
-    w.sources<T>().push_back({c.from.component, slot, reads_previous(c)});
+    w.sources<T>().push_back({c.from.component, slot, reads_previous(c), c.options.transforms(),
+                              c.options.factor, c.options.offset, index});
     return lane<T>(w.refs).size() - 1;
   }
 
   void wire_inputs() {
-    for (const auto& c : wiring.connections) {
+    for (std::size_t index = 0; index < wiring.connections.size(); ++index) {
+      const connection& c = wiring.connections[index];
       const std::size_t slot = add_output(c.from);
       const auto& to = var(c.to);
       const bool init_only =
@@ -131,10 +141,14 @@ class fixed_step_algorithm::impl {
       entry& e = entries[c.to.component];
       input_wiring& w = init_only ? e.init_inputs : e.step_inputs;
       std::size_t to_slot = 0;
-      detail::with_type(to.type, [&]<class T>() { to_slot = add_input<T>(w, c, slot); });
+      detail::with_type(to.type, [&]<class T>() { to_slot = add_input<T>(w, c, slot, index); });
       // within a step group the group itself carries the value from member to member
       const std::size_t g = entries[c.from.component].group;
       if (!init_only && g != k_no_group && g == e.group) {
+        if (c.options.transforms()) {
+          throw validation_error(c.options.origin + ": a step group cannot carry a connection " +
+                                 "with a linear transformation between its members");
+        }
         const auto position = [&](std::size_t component) {
           const auto& m = groups[g].members;
           return static_cast<std::size_t>(std::find(m.begin(), m.end(), component) - m.begin());
@@ -160,8 +174,27 @@ class fixed_step_algorithm::impl {
       const auto& sources = w.sources<T>();
       for (std::size_t i = 0; i < sources.size(); ++i) {
         values[i] = read<T>(sources[i], sources[i].previous ? previous : current);
+        if constexpr (std::is_same_v<T, double>) {
+          if (sources[i].transformed) values[i] = transform(sources[i], values[i]);
+        }
       }
     });
+  }
+
+  // factor × value + offset; an infinity or NaN reaches no component (as for outputs)
+  double transform(const source& s, double value) const {
+    const double out = s.factor * value + s.offset;
+    if (!std::isfinite(out)) {
+      const connection& c = wiring.connections[s.connection];
+      const auto name = [&](variable_id id) {
+        return entries[id.component].c->name() + "." + var(id).name;
+      };
+      throw component_error((c.options.origin.empty() ? "" : c.options.origin + ": ") +
+                            "connection " + name(c.from) + " -> " + name(c.to) + ": " +
+                            text::format_double(s.factor) + " * " + text::format_double(value) +
+                            " + " + text::format_double(s.offset) + " is not a finite number");
+    }
+    return out;
   }
 
   // runs `f`, turning any exception into a component_error naming the component and the time

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdlib>
 #include <map>
+#include <set>
 
 #include "stride/cosim/error.hpp"
 
@@ -185,7 +186,8 @@ std::vector<std::size_t> expand_components(const execution& ex, const std::strin
 // one side of a connection, "comp.var" with groups on either part → variables in pairing order
 std::vector<variable_id> expand_side(const execution& ex, const std::string& full,
                                      const std::string& context) {
-  const auto dot = full.find('.');
+  const auto dot = component_end(
+      full, [&](std::string_view name) { return ex.find_component(name).has_value(); });
   if (dot == std::string::npos || dot == 0 || dot + 1 == full.size()) {
     throw validation_error(context + "'" + full + "' is not of the form component.variable");
   }
@@ -221,9 +223,17 @@ std::vector<std::vector<std::size_t>> worker_groups(const execution& ex,
   }
   std::map<std::size_t, std::vector<std::size_t>> sets;
   for (std::size_t i = 0; i < n; ++i) sets[find(i)].push_back(i);
+  // a group carries values between its members as they are (its links know no factor or
+  // offset): members joined by a transforming connection step one by one
+  std::set<std::size_t> transformed;
+  for (const auto& c : ex.connections()) {
+    if (c.options.transforms() && find(c.from.component) == find(c.to.component)) {
+      transformed.insert(find(c.from.component));
+    }
+  }
   std::vector<std::vector<std::size_t>> groups;
   for (auto& [first, members] : sets) {
-    if (members.size() > 1) groups.push_back(std::move(members));
+    if (members.size() > 1 && !transformed.contains(first)) groups.push_back(std::move(members));
   }
   if (kind == algorithm_kind::gauss_seidel) {
     const auto kept = steppable_groups(n, ex.connections(), groups);
@@ -346,7 +356,8 @@ built_system build_system(const system_structure& structure, const build_options
                              " variables, the target group " + std::to_string(targets.size()));
     }
     for (std::size_t k = 0; k < sources.size(); ++k) {
-      ex->connect(sources[k], targets[k], connection_options{c.delayed, c.where.str()});
+      ex->connect(sources[k], targets[k],
+                  connection_options{c.delayed, c.where.str(), c.factor, c.offset});
     }
   }
 

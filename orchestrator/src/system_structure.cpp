@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <sstream>
 
@@ -51,8 +53,26 @@ component_spec* system_structure::find_component(std::string_view component_name
   return nullptr;
 }
 
+std::size_t component_end(std::string_view full_name,
+                          const std::function<bool(std::string_view)>& is_component) {
+  // component names may hold dots: the longest one that prefixes the name wins
+  for (auto dot = full_name.rfind('.'); dot != std::string_view::npos && dot > 0;
+       dot = full_name.rfind('.', dot - 1)) {
+    if (is_component(full_name.substr(0, dot))) return dot;
+  }
+  return full_name.find('.');
+}
+
 void system_structure::set(const std::string& full_name, std::string value, source_location at) {
-  const auto dot = full_name.find('.');
+  const auto dot = component_end(full_name, [&](std::string_view name) {
+    if (find_component(name) != nullptr) return true;
+    for (const auto& g : groups) {
+      for (const auto& m : g.components) {
+        if (m.name == name) return true;
+      }
+    }
+    return false;
+  });
   if (dot == std::string::npos || dot == 0 || dot + 1 == full_name.size()) {
     throw validation_error("'" + full_name + "' is not of the form component.variable");
   }
@@ -300,13 +320,25 @@ class system_reader {
   }
 
   connection_spec read_connection(const tinyxml2::XMLElement* e) const {
-    check_attributes(e, {"from", "to", "delay"});
+    check_attributes(e, {"from", "to", "delay", "factor", "offset"});
     connection_spec c;
     c.from = required(e, "from");
     c.to = required(e, "to");
     c.delayed = boolean(e, "delay", false);
+    c.factor = finite(e, "factor", 1.0);
+    c.offset = finite(e, "offset", 0.0);
     c.where = at(e);
     return c;
+  }
+
+  double finite(const tinyxml2::XMLElement* e, const char* name, double fallback) const {
+    const char* v = e->Attribute(name);
+    if (v == nullptr) return fallback;
+    const auto value = text::parse_double(v);
+    if (!value || !std::isfinite(*value)) {
+      fail(e->GetLineNum(), std::string(name) + "=\"" + v + "\" is not a finite number");
+    }
+    return *value;
   }
 
   int positive_integer(const tinyxml2::XMLElement* e, const char* name) const {
@@ -337,7 +369,7 @@ class system_reader {
       const std::string_view tag = c->Name();
       order.check(c, *this);
       if (tag == "component") {
-        read_component(c, g.components);
+        read_component(c, g.components, true);
       } else if (tag == "connection") {
         g.connections.push_back(read_connection(c));
       } else {
@@ -349,14 +381,19 @@ class system_reader {
     s.groups.push_back(std::move(g));
   }
 
-  void read_component(const tinyxml2::XMLElement* e,
-                      std::vector<component_spec>& components) const {
+  // a replica group's members take no dots: "gait.x" inside a group means member gait
+  void read_component(const tinyxml2::XMLElement* e, std::vector<component_spec>& components,
+                      bool member = false) const {
     check_attributes(e, {"name", "fmu", "step_multiple", "worker"});
     component_spec c;
     c.name = required(e, "name");
-    if (c.name.find_first_of(". \t*?[]") != std::string::npos) {
-      fail(e->GetLineNum(),
-           "component name \"" + c.name + "\" must not contain '.', blanks, '*', '?' or brackets");
+    const bool bad_dots = member ? c.name.find('.') != std::string::npos
+                                 : c.name.front() == '.' || c.name.back() == '.' ||
+                                       c.name.find("..") != std::string::npos;
+    if (bad_dots || c.name.find_first_of(" \t*?[]") != std::string::npos) {
+      fail(e->GetLineNum(), "component name \"" + c.name + "\" must not contain " +
+                                (member ? "'.', " : "") + "blanks, '*', '?' or brackets" +
+                                (member ? "" : ", nor begin or end with '.' or hold '..'"));
     }
     for (const auto& other : components) {
       if (other.name == c.name) {
@@ -488,6 +525,8 @@ std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
     e->SetAttribute("from", c.from.c_str());
     e->SetAttribute("to", c.to.c_str());
     if (c.delayed) e->SetAttribute("delay", "true");
+    if (c.factor != 1.0) e->SetAttribute("factor", text::format_double(c.factor).c_str());
+    if (c.offset != 0.0) e->SetAttribute("offset", text::format_double(c.offset).c_str());
   };
   for (const auto& c : s.components) write_component(root, c);
   for (const auto& g : s.groups) {

@@ -159,7 +159,7 @@ std::string seconds(double s) {
 void check_suite(const suite_spec& suite, const assertion_registry& kinds) {
   const fs::path dir = suite.file.parent_path();
   for (const auto& c : suite.cases) {
-    if (!fs::is_regular_file(c.system)) {
+    if (!fs::exists(c.system)) {  // a file, or a folder (an SSP's)
       throw cosim::validation_error(c.where.str() + ": system file " + c.system.string() +
                                     " not found");
     }

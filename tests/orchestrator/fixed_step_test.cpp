@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <thread>
 
 #include "execution_fixtures.hpp"
@@ -71,6 +72,72 @@ TEST(cosim_algorithm, delayed_connection_reads_the_previous_communication_point)
   algo.initialize(std::nullopt);
   for (int k = 0; k < 3; ++k) algo.step();
   EXPECT_EQ(algo.real_value(b), 2.0);
+}
+
+// B latches A's y through factor 2, offset 1: after k steps A.y = k (Gauss-Seidel: B reads it
+// in the same macro step), so B.u = 2k + 1 and B.y = 2k + 1
+TEST(cosim_algorithm, a_transforming_connection_delivers_factor_times_value_plus_offset) {
+  auto log = std::make_shared<call_log>();
+  execution algo(std::make_unique<fixed_step_algorithm>(10 * k_ms, algorithm_kind::gauss_seidel),
+                 time_point{}, quiet_log());
+  algo.add_component(counter("A", log));
+  algo.add_component(latch("B", log));
+  algo.connect(var(algo, "A", "y"), var(algo, "B", "u"), {false, "here", 2.0, 1.0});
+  const auto u = algo.observe(var(algo, "B", "u"));
+  const auto y = algo.observe(var(algo, "B", "y"));
+  algo.initialize(std::nullopt);
+  EXPECT_EQ(algo.real_value(u), 1.0);  // 2 * 0 + 1 at initialization
+  for (int k = 0; k < 3; ++k) algo.step();
+  EXPECT_EQ(algo.real_value(u), 7.0);
+  EXPECT_EQ(algo.real_value(y), 7.0);
+}
+
+// 1 * x + 0 would turn -0.0 into +0.0: an untransformed connection does no arithmetic at all
+TEST(cosim_algorithm, an_untransformed_connection_passes_the_value_bit_for_bit) {
+  execution algo(std::make_unique<fixed_step_algorithm>(10 * k_ms), time_point{}, quiet_log());
+  auto a = std::make_unique<mock_component>("A");
+  a->real("y", causality::output);
+  a->on_update = [](mock_component& self) { self.r("y") = -0.0; };
+  algo.add_component(std::move(a));
+  algo.add_component(latch("B", {}));
+  algo.connect(var(algo, "A", "y"), var(algo, "B", "u"), {false, "here", 1.0, 0.0});
+  const auto u = algo.observe(var(algo, "B", "u"));
+  algo.initialize(std::nullopt);
+  algo.step();
+  EXPECT_TRUE(std::signbit(algo.real_value(u)));
+}
+
+TEST(cosim_algorithm, a_transformation_that_overflows_stops_the_run_naming_the_connection) {
+  execution algo(std::make_unique<fixed_step_algorithm>(10 * k_ms), time_point{}, quiet_log());
+  algo.add_component(counter("A", {}));
+  algo.add_component(latch("B", {}));
+  algo.connect(var(algo, "A", "y"), var(algo, "B", "u"), {false, "t.ssd:9", 1e308, 0.0});
+  algo.initialize(std::nullopt);
+  try {
+    for (int k = 0; k < 3; ++k) algo.step();  // 1e308 × 2 overflows
+    ADD_FAILURE() << "an infinity reached B";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("t.ssd:9: connection A.y -> B.u: 1e+308 * 2 + 0 is not a "
+                                    "finite number"));
+  }
+}
+
+TEST(cosim_algorithm, only_real_connections_transform) {
+  execution algo(std::make_unique<fixed_step_algorithm>(10 * k_ms), time_point{}, quiet_log());
+  for (const char* name : {"A", "B"}) {
+    auto m = std::make_unique<mock_component>(name);
+    m->add("n", variable_type::integer, causality::output);
+    m->add("k", variable_type::integer, causality::input);
+    algo.add_component(std::move(m));
+  }
+  algo.connect(var(algo, "A", "n"), var(algo, "B", "k"), {false, "t.ssd:4", 1.0, 1.0});
+  try {
+    algo.initialize(std::nullopt);
+    ADD_FAILURE() << "an Integer connection transformed";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("t.ssd:4: connection A.n -> B.k: a linear transformation "
+                                    "(factor, offset) applies to Real variables only"));
+  }
 }
 
 // C is declared before its producer P and feeds P back through a delay. Gauss-Seidel must step P

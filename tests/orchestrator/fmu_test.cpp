@@ -643,7 +643,9 @@ TEST_F(cosim_fmu_test, loop_through_feedthrough_outputs_is_found_from_model_stru
   }
   s.connections[1].delayed = true;
   EXPECT_NO_THROW(build_system(s, o));
-  s.connections[1] = {"b.integral", "a.u", false, {}};  // no feedthrough: fine
+  s.connections[1].from = "b.integral";  // no feedthrough: fine
+  s.connections[1].to = "a.u";
+  s.connections[1].delayed = false;
   EXPECT_NO_THROW(build_system(s, o));
 }
 

@@ -241,5 +241,17 @@ TEST(cosim_step_group, worker_groups_are_connected_sets_off_same_step_cycles) {
             (std::vector<std::vector<std::size_t>>{{0, 1}}));  // Jacobi: no same-step values
 }
 
+// a group's links carry values as they are: members joined by a transforming connection step
+// through the algorithm, which applies factor and offset
+TEST(cosim_step_group, a_transforming_connection_keeps_its_ends_out_of_a_group) {
+  execution ex(std::make_unique<fixed_step_algorithm>(10 * k_ms), time_point{}, quiet_log());
+  for (const char* name : {"A", "B", "C", "D"}) ex.add_component(mixer(name));
+  ex.connect(var(ex, "A", "y"), var(ex, "B", "u"), {false, {}, 2.0, 0.0});
+  ex.connect(var(ex, "C", "y"), var(ex, "D", "u"), {false, {}, 1.0, 0.0});
+  const std::vector<std::string> workers{"w", "w", "w", "w"};
+  EXPECT_EQ(worker_groups(ex, workers, algorithm_kind::gauss_seidel),
+            (std::vector<std::vector<std::size_t>>{{2, 3}}));
+}
+
 }  // namespace
 }  // namespace stride::cosim::test

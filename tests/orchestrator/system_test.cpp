@@ -203,6 +203,60 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
             "t/test.xml:3: file=\"../x.csv\" must be a relative path inside the output folder");
 }
 
+TEST(cosim_system_xml, connections_carry_a_factor_and_an_offset) {
+  const auto s = parse(
+      "<system>\n<component name='a' fmu='m'/>\n"
+      "<connection from='a.y' to='a.u' factor='2.5' offset='-1e-3'/>\n</system>");
+  EXPECT_EQ(s.connections[0].factor, 2.5);
+  EXPECT_EQ(s.connections[0].offset, -1e-3);
+  const auto back = parse(to_xml(s));
+  EXPECT_EQ(back.connections[0].factor, 2.5);
+  EXPECT_EQ(back.connections[0].offset, -1e-3);
+  // the defaults are not written
+  EXPECT_EQ(to_xml(parse("<system>\n<component name='a' fmu='m'/>\n"
+                         "<connection from='a.y' to='a.u'/>\n</system>"))
+                .find("factor"),
+            std::string::npos);
+  try {
+    parse(
+        "<system>\n<component name='a' fmu='m'/>\n"
+        "<connection from='a.y' to='a.u' factor='inf'/>\n</system>");
+    ADD_FAILURE() << "factor inf read";
+  } catch (const validation_error& e) {
+    EXPECT_STREQ(e.what(), "t/test.xml:3: factor=\"inf\" is not a finite number");
+  }
+}
+
+// names of nested SSP systems ("engine.pump") hold dots; a connection side or --set names the
+// longest component that prefixes it
+TEST(cosim_system_xml, component_names_may_hold_dots_outside_replica_groups) {
+  auto s = parse(
+      "<system>\n<simulation stop='1' step='1'/>\n<component name='engine' fmu='m'/>\n"
+      "<component name='engine.pump' fmu='m'/>\n</system>");
+  s.set("engine.pump.gain", "3");
+  s.set("engine.gain", "4");
+  EXPECT_EQ(s.find_component("engine.pump")->parameters.at(0).value, "3");
+  EXPECT_EQ(s.find_component("engine")->parameters.at(0).value, "4");
+  s.connect("engine.y", "engine.pump.u");
+  const built_system b = build_system(s, mock_options());
+  const auto& c = b.execution->connections().at(0);
+  EXPECT_EQ(b.execution->component_at(c.to.component).name(), "engine.pump");
+  EXPECT_EQ(b.execution->component_at(c.from.component).name(), "engine");
+  const auto error_of = [](const std::string& xml) {
+    try {
+      parse(xml);
+    } catch (const validation_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_THAT(error_of("<system>\n<component name='a..b' fmu='m'/>\n</system>"),
+              HasSubstr("t/test.xml:2: component name \"a..b\" must not contain"));
+  EXPECT_THAT(error_of("<system>\n<replicate name='g' count='2'>\n<component name='a.b' "
+                       "fmu='m'/>\n</replicate>\n</system>"),
+              HasSubstr("t/test.xml:3: component name \"a.b\" must not contain '.'"));
+}
+
 TEST(cosim_system_xml, agents_are_read_written_and_checked) {
   const system_structure s = parse(
       "<system>\n<agents count='4' mode='asynchronous'/>\n<component name='a' fmu='m'/>"

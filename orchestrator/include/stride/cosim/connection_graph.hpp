@@ -25,6 +25,11 @@ struct connection_options {
   bool delayed = false;
   /// where the connection was declared ("walk.xml:12"), quoted in error messages
   std::string origin;
+  /// the target receives factor × source + offset (Real only); 1 and 0: the value untouched
+  double factor = 1.0;
+  double offset = 0.0;
+
+  bool transforms() const noexcept { return factor != 1.0 || offset != 0.0; }
 };
 
 /// A resolved connection.
@@ -46,8 +51,9 @@ struct component_declarations {
 };
 
 /// Checks every connection: it starts at an output and ends at an input or a non-constant
-/// parameter of the same exchange type, and no input is driven twice; unit mismatches are
-/// warnings. \throws validation_error naming components, variables and connection origins.
+/// parameter of the same exchange type, a linear transformation only between Reals, and no
+/// input is driven twice; unit mismatches of untransformed connections are warnings. \throws
+/// validation_error naming components, variables and connection origins.
 void validate_connections(const component_declarations& components,
                           const std::vector<connection>& connections, const log_sink& log);
 

@@ -72,7 +72,8 @@ built_system build_system(const system_structure& system, const build_options& o
 /// The components that step together on their worker: the sets (two or more, indices
 /// ascending) of components with the same `workers[i]` (empty: this process, never grouped)
 /// connected to each other, except those that may not step as one unit
-/// (steppable_groups(), Gauss-Seidel only). Valid before and after freeze().
+/// (steppable_groups(), Gauss-Seidel only) and those joined by a connection with a factor or
+/// offset (a group's links carry values as they are). Valid before and after freeze().
 std::vector<std::vector<std::size_t>> worker_groups(const execution& ex,
                                                     const std::vector<std::string>& workers,
                                                     algorithm_kind kind);

@@ -4,6 +4,8 @@
 #define STRIDE_COSIM_SYSTEM_STRUCTURE_HPP
 
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,6 +15,8 @@
 #include "stride/cosim/time.hpp"
 
 namespace stride::cosim {
+
+class temp_dir;
 
 /// Where a declaration came from, for error messages ("walk.xml:12"); empty when built in code.
 struct source_location {
@@ -31,6 +35,8 @@ struct parameter_setting {
 
 /// A component instance.
 struct component_spec {
+  /// Unique. May hold dots ("engine.pump": a component of a nested SSP system); a "comp.var"
+  /// name then means the longest component name that prefixes it.
   std::string name;
   /// A path to an .fmu (relative to the system file's folder), or the bare name of a bundled
   /// FMU ("gait": no '/' and no ".fmu" suffix) looked up in $STRIDE_FMU_PATH and the build's
@@ -44,6 +50,12 @@ struct component_spec {
   source_location where;
 };
 
+/// Where the component part of a "comp.var" name ends: at the dot after the longest prefix that
+/// `is_component` accepts (component names may hold dots), else at the first dot; npos when
+/// the name has no dot.
+std::size_t component_end(std::string_view full_name,
+                          const std::function<bool(std::string_view)>& is_component);
+
 /// Whether an FMU reference is the bare name of a bundled FMU ("gait": not empty, no '/', no
 /// ".fmu" suffix) rather than a path ("x/gait.fmu", "gait.fmu").
 bool is_bundled_fmu_name(std::string_view fmu) noexcept;
@@ -55,7 +67,14 @@ struct connection_spec {
   std::string from;
   std::string to;
   bool delayed = false;  ///< one-step delay: breaks an algebraic loop
+  /// The target receives factor × source + offset (Real variables only; SSP linear
+  /// transformations and unit conversions). 1 and 0 pass the value on untouched.
+  double factor = 1.0;
+  double offset = 0.0;
   source_location where;
+
+  /// Whether the value is transformed on its way (factor != 1 or offset != 0).
+  bool transforms() const noexcept { return factor != 1.0 || offset != 0.0; }
 };
 
 /// What to record.
@@ -110,6 +129,9 @@ struct system_structure {
   std::vector<replica_group> groups;  ///< expanded by expand_replicas()
   record_spec record;
   agents_spec agents;
+  /// The folder an archive (.ssp) was extracted into, when the system came from one: its FMU
+  /// paths point there, so it lives as long as any copy of the structure.
+  std::shared_ptr<const temp_dir> extracted;
 
   /// Convenience for C++ callers; each returns the added element.
   component_spec& add_component(std::string name, std::string fmu, int step_multiple = 1);
@@ -135,7 +157,8 @@ system_structure on_worker(system_structure system, const std::string& worker);
 /// \throws validation_error if the text has no '=' or names no component.
 void apply_override(system_structure& system, const std::string& assignment);
 
-/// Reads a system XML file. \throws validation_error naming the file and line.
+/// Reads a system XML file (Stride's own format only; load_system_file() in system_import.hpp
+/// reads any format). \throws validation_error naming the file and line.
 system_structure parse_system_file(const std::filesystem::path& file);
 /// Reads system XML held in memory; `file` names it in messages and gives the base folder.
 system_structure parse_system_text(std::string_view xml, const std::filesystem::path& file);
