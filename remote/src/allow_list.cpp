@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "protocol.hpp"
+#include "stride/common/files.hpp"
 
 namespace stride::remote {
 
@@ -44,10 +44,7 @@ void add_digests_of_folder(const fs::path& dir, fmu_allow_list& list) {
   std::size_t found = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (!entry.is_regular_file() || entry.path().extension() != ".fmu") continue;
-    std::ifstream in(entry.path(), std::ios::binary);
-    const std::string bytes{std::istreambuf_iterator<char>(in), {}};
-    if (!in && !in.eof())
-      throw std::runtime_error("--allow-fmu: cannot read " + entry.path().string());
+    const std::string bytes = common::read_file(entry.path());
     list.insert(content_hash(std::as_bytes(std::span(bytes.data(), bytes.size()))));
     ++found;
   }

@@ -7,6 +7,7 @@
 #include "keystore_documents.hpp"
 #include "keystore_io.hpp"
 #include "keystore_x509.hpp"
+#include "stride/common/files.hpp"
 
 namespace stride::remote::keystore {
 namespace {
@@ -19,7 +20,6 @@ constexpr int k_max_valid_days = 36500;  // Cyclone reads validity dates up to t
 using io::about;
 using io::date;
 using io::make_directory;
-using io::read_text;
 using io::write_new;
 
 void check_valid_days(int days) {
@@ -30,7 +30,7 @@ void check_valid_days(int days) {
 }
 
 x509::cert_ptr load_certificate(const fs::path& pem) {
-  const std::string text = read_text(pem);
+  const std::string text = common::read_file(pem);
   return about(pem, [&] { return x509::certificate_from_pem(text); });
 }
 
@@ -58,12 +58,12 @@ keystore_files open_keystore(const fs::path& dir) {
                              " a keystore? (make one with `stride security init`)");
   }
   k.ca = load_certificate(ca);
-  const std::string key_text = read_text(key);
+  const std::string key_text = common::read_file(key);
   k.ca_key = about(key, [&] { return x509::key_from_pem(key_text); });
   if (!x509::key_matches(k.ca.get(), k.ca_key.get())) {
     throw std::runtime_error(key.string() + ": not the key of " + ca.string());
   }
-  k.governance_p7s = read_text(governance);
+  k.governance_p7s = common::read_file(governance);
   k.governance = about(governance, [&] {
     return documents::read_governance(x509::smime_content(k.governance_p7s, k.ca.get()));
   });
@@ -258,7 +258,7 @@ bool is_smime(const std::string& text) {
 
 // the XML of a permissions document, its signature verified against `ca` when given
 std::string permissions_text(const fs::path& file, const fs::path& ca) {
-  const std::string text = read_text(file);
+  const std::string text = common::read_file(file);
   if (!is_smime(text)) {
     if (!ca.empty()) {
       throw std::runtime_error(file.string() + ": not signed, so it cannot be verified against " +

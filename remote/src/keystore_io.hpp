@@ -22,8 +22,6 @@ auto about(const std::filesystem::path& file, F&& f) -> decltype(f()) {
   }
 }
 
-/// The whole file; throws naming it.
-std::string read_text(const std::filesystem::path& file);
 /// Creates `file` with `mode` from the start (O_CREAT | O_EXCL | O_NOFOLLOW): never an existing
 /// file, never through a symbolic link, never chmod-ed after writing.
 void write_new(const std::filesystem::path& file, const std::string& text, mode_t mode);

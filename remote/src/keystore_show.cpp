@@ -7,6 +7,7 @@
 #include "keystore_documents.hpp"
 #include "keystore_io.hpp"
 #include "keystore_x509.hpp"
+#include "stride/common/files.hpp"
 #include "stride/remote/keystore.hpp"
 
 namespace stride::remote::keystore {
@@ -41,8 +42,8 @@ std::string key_mode(const fs::path& key) {
 
 // the text of a signed document, verified against `ca`
 std::string verified_text(const fs::path& file, const fs::path& ca) {
-  const std::string signed_text = io::read_text(file);
-  const std::string ca_text = io::read_text(ca);
+  const std::string signed_text = common::read_file(file);
+  const std::string ca_text = common::read_file(ca);
   return io::about(file, [&] {
     const x509::cert_ptr signer =
         io::about(ca, [&] { return x509::certificate_from_pem(ca_text); });

@@ -3,10 +3,11 @@
 #include <tinyxml2.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string_view>
 #include <vector>
+
+#include "stride/common/files.hpp"
 
 namespace stride::remote {
 
@@ -78,10 +79,11 @@ std::vector<std::pair<std::string, std::string>> config_texts(const dds_settings
     }
   }
   for (const std::string& file : files) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    texts.emplace_back(file, in ? text.str() : std::string());
+    try {
+      texts.emplace_back(file, common::read_file(file));
+    } catch (const std::runtime_error&) {
+      texts.emplace_back(file, std::string());  // unreadable: said by the caller
+    }
   }
   return texts;
 }

@@ -8,12 +8,25 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <system_error>
 
 namespace stride::common {
+
+/// The whole of `file`. \throws std::runtime_error "FILE: cannot read (reason)".
+inline std::string read_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    throw std::runtime_error(file.string() + ": cannot read (" + std::strerror(errno) + ")");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 /// Replaces `file` with `bytes`, atomically: the bytes go into `file`.tmp, which is written in
 /// full, synced and closed, then renamed over `file`. Afterwards `file` holds either its old

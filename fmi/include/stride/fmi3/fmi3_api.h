@@ -1,5 +1,5 @@
-/* FMI 3.0 C API, declared for Stride from the FMI 3.0 specification (§2.2, the C API and its
- * platform types; docs/fmi3-rules.md is the fact sheet).
+/* FMI 3.0 C API, declared for Stride from the standard's C API and platform types, as
+ * docs/fmi3-rules.md §1 sets them out.
  *
  * The type names, enumerator values and function signatures below are the binary interface of
  * the standard; they must stay exactly as the specification defines them. Unlike
