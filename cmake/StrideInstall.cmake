@@ -22,12 +22,13 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/models/" DESTINATION "${CMAKE_INSTALL_D
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/" DESTINATION "${CMAKE_INSTALL_DATADIR}/stride/examples"
         PATTERN build EXCLUDE)
 
-install(TARGETS stride_fmi_api stride_sdk stride_sdk_glue stride_sdk_generator
+install(TARGETS stride_fmi_api stride_sdk stride_sdk_glue stride_sdk_glue3 stride_sdk_generator
   EXPORT StrideTargets
   ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}"
   OBJECTS DESTINATION "${CMAKE_INSTALL_LIBDIR}/stride/objects")
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/fmi/include/stride/sdk"
                   "${PROJECT_SOURCE_DIR}/fmi/include/stride/fmi2"
+                  "${PROJECT_SOURCE_DIR}/fmi/include/stride/fmi3"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/stride")
 install(EXPORT StrideTargets NAMESPACE Stride:: DESTINATION "${STRIDE_INSTALL_CMAKE_DIR}")
 
@@ -43,4 +44,5 @@ install(FILES "${PROJECT_BINARY_DIR}/StrideConfig.cmake"
               "${CMAKE_CURRENT_LIST_DIR}/StrideFmu.cmake"
               "${CMAKE_CURRENT_LIST_DIR}/StrideBundleDependencies.cmake"
               "${CMAKE_CURRENT_LIST_DIR}/fmu_exports.map"
+              "${CMAKE_CURRENT_LIST_DIR}/fmu3_exports.map"
         DESTINATION "${STRIDE_INSTALL_CMAKE_DIR}")

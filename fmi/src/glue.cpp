@@ -13,7 +13,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "instance.hpp"
+#include "glue_common.hpp"
 #include "lifecycle.hpp"
 #include "start_value.hpp"
 #include "stride/fmi2/fmi2_api.h"
@@ -21,28 +21,6 @@
 
 namespace stride::sdk::glue {
 namespace {
-
-// The definition of the FMU unpacked at `resource_dir` and its GUID, loaded once per folder (a
-// generated FMU reads its interface from there; a compiled one has a single definition).
-const loaded_fmu& definition_for(const std::string& resource_dir) {
-  static std::mutex mutex;
-  static std::map<std::string, std::unique_ptr<const loaded_fmu>> loaded;
-  std::lock_guard lock(mutex);
-  auto& entry = loaded[resource_dir];
-  if (!entry) {
-    std::shared_ptr<const fmu_definition> fmu = detail::fmu_for(resource_dir);
-    std::string guid = compute_guid(*fmu);
-    entry = std::make_unique<const loaded_fmu>(loaded_fmu{std::move(fmu), std::move(guid)});
-  }
-  return *entry;
-}
-
-std::vector<std::string> known_log_categories(const fmu_definition& fmu) {
-  std::vector<std::string> names = {"logStatusWarning", "logStatusError", "logStatusFatal",
-                                    "logEvents", "logCalls"};
-  for (const auto& category : fmu.info.log_categories) names.push_back(category.first);
-  return names;
-}
 
 // Returns the instance when `f` may be called in its current state, otherwise logs and
 // returns nullptr (the caller answers fmi2Error; the state does not change).
@@ -64,27 +42,9 @@ fmi2Status fail(instance& inst, const std::string& message) {
 }
 
 // A component threw: the instance can no longer be trusted.
-fmi2Status component_failed(instance& inst, const char* function_name, const std::exception& e) {
-  inst.state = error;
-  return fail(inst, std::string(function_name) + ": " + e.what());
-}
-
-bool settable(const variable& v, std::uint32_t state) {
-  if (v.variability_kind == variability::constant) return false;
-  if (state & (instantiated | initialization_mode)) {
-    return v.causality_kind == causality::input || v.initial == initial_kind::exact ||
-           v.initial == initial_kind::approx;
-  }
-  if (state & step_complete) {
-    return v.causality_kind == causality::input ||
-           (v.causality_kind == causality::parameter && v.variability_kind == variability::tunable);
-  }
-  return false;
-}
-
-std::string describe(const variable& v) {
-  return "'" + v.name + "' (" + std::string(to_string(v.causality_kind)) + ", " +
-         std::string(to_string(v.variability_kind)) + ")";
+fmi2Status failed(instance& inst, const char* function_name, const std::exception& e) {
+  component_failed(inst, function_name, e);
+  return fmi2Error;
 }
 
 // Looks up vr as a variable of `type`; logs and returns nullptr otherwise.
@@ -108,36 +68,6 @@ bool null_arguments(instance& inst, const char* function_name, size_t n, const v
   return false;
 }
 
-// Checks a numeric value against the variable's range and extra check; "" when acceptable.
-std::string range_problem(const variable& v, double x) {
-  if (!std::isfinite(x)) return "value is not a finite number";
-  if (x < v.min || x > v.max) {
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer, "value %.17g is outside [%.17g, %.17g]", x, v.min, v.max);
-    return buffer;
-  }
-  if (v.check) {
-    try {
-      v.check(x);
-    } catch (const std::exception& e) {
-      return e.what();
-    }
-  }
-  return {};
-}
-
-bool refresh_values(instance& inst, const char* function_name) {
-  if (!inst.values_dirty) return true;
-  try {
-    inst.component->calculate_values();
-    inst.values_dirty = false;
-    return true;
-  } catch (const std::exception& e) {
-    component_failed(inst, function_name, e);
-    return false;
-  }
-}
-
 template <class Stored, class FmiValue, class Convert>
 fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, FmiValue value[],
                       value_type type, const char* name, Convert convert) {
@@ -150,21 +80,6 @@ fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr
     value[i] = convert(read_value<Stored>(inst->data, v->offset));
   }
   return fmi2OK;
-}
-
-// Writes one value at `at`; a String longer than the variable's capacity is refused.
-template <class T>
-void write_value(char* at, const variable&, T x) {
-  std::memcpy(at, &x, sizeof x);
-}
-void write_value(char* at, const variable& v, std::string_view s) {
-  if (s.size() > v.string_capacity) {
-    throw std::length_error("string of " + std::to_string(s.size()) +
-                            " characters exceeds the capacity of " +
-                            std::to_string(v.string_capacity));
-  }
-  std::memcpy(at, s.data(), s.size());
-  at[s.size()] = '\0';
 }
 
 // The four fmi2Set* functions; T is the stored type (std::string_view for String). Each value is
@@ -189,69 +104,10 @@ fmi2Status set_values(fmi2Component c, const fmi2ValueReference vr[], size_t nvr
     } else {
       x = value[i];
     }
-    if (!settable(*v, inst->state)) {
-      return fail(*inst, std::string(name) + ": variable " + describe(*v) +
-                             " cannot be set in state " + state_name(inst->state));
-    }
-    if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
-      const std::string problem = range_problem(*v, x);
-      if (!problem.empty()) {
-        return fail(*inst, std::string(name) + ": '" + v->name + "': " + problem);
-      }
-    }
-    try {
-      write_value(inst->data + v->offset, *v, x);
-      inst->component->on_set(*v);
-    } catch (const std::exception& e) {
-      return fail(*inst, std::string(name) + ": '" + v->name + "': " + e.what());
-    }
-    inst->values_dirty = true;
+    const std::string problem = store_value<T>(*inst, *v, x, state_name(inst->state));
+    if (!problem.empty()) return fail(*inst, std::string(name) + ": " + problem);
   }
   return fmi2OK;
-}
-
-constexpr char k_state_magic[8] = {'S', 'T', 'R', 'D', 'S', 'T', 'A', '1'};
-
-struct state_header {
-  char magic[8];
-  char guid[40];
-  time_ns time;
-  std::uint32_t lifecycle;
-  std::uint8_t terminate_requested;
-};
-
-std::vector<std::byte> serialize(instance& inst) {
-  state_header header{};
-  std::memcpy(header.magic, k_state_magic, sizeof header.magic);
-  std::strncpy(header.guid, inst.loaded.guid.c_str(), sizeof header.guid - 1);
-  header.time = inst.time;
-  header.lifecycle = inst.state;
-  header.terminate_requested = inst.terminate_requested ? 1 : 0;
-  std::vector<std::byte> body = inst.component->save_state();
-  std::vector<std::byte> bytes(sizeof header + body.size());
-  std::memcpy(bytes.data(), &header, sizeof header);
-  if (!body.empty()) std::memcpy(bytes.data() + sizeof header, body.data(), body.size());
-  return bytes;
-}
-
-// "" when the bytes are a state of this FMU, otherwise the reason.
-std::string state_problem(const instance& inst, const std::byte* bytes, size_t size) {
-  if (bytes == nullptr || size < sizeof(state_header)) return "too short to be an FMU state";
-  state_header header;
-  std::memcpy(&header, bytes, sizeof header);
-  if (std::memcmp(header.magic, k_state_magic, sizeof header.magic) != 0) {
-    return "not a Stride FMU state";
-  }
-  if (std::strncmp(header.guid, inst.loaded.guid.c_str(), sizeof header.guid) != 0) {
-    return "state belongs to another FMU (GUID " +
-           std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
-  }
-  return {};
-}
-
-saved_state* find_state(instance& inst, fmi2FMUstate s) {
-  auto* state = static_cast<saved_state*>(s);
-  return inst.saved_states.count(state) ? state : nullptr;
 }
 
 // "file:///a/b", "file://host/a/b" or "file:/a/b" → "/a/b", with %XX decoded; throws
@@ -294,6 +150,24 @@ std::string path_from_uri(const char* uri) {
   return out;
 }
 
+// The FMI 2.0 logger takes the message as a printf format: '%' is escaped.
+log_sink fmi2_sink(const fmi2CallbackFunctions& functions, const std::string& instance_name) {
+  if (functions.logger == nullptr) return {};
+  return [callback = functions.logger, environment = functions.componentEnvironment, instance_name](
+             log_level level, const char* category, const std::string& message) {
+    std::string escaped;
+    escaped.reserve(message.size());
+    for (char c : message) {
+      escaped += c;
+      if (c == '%') escaped += '%';
+    }
+    const fmi2Status status = level == log_level::error     ? fmi2Error
+                              : level == log_level::warning ? fmi2Warning
+                                                            : fmi2OK;
+    callback(environment, instance_name.c_str(), status, category, escaped.c_str());
+  };
+}
+
 fmi2Status unsupported(fmi2Component c, function f, const char* name, const char* why) {
   instance* inst = enter(c, f, name);
   if (inst == nullptr) return fmi2Error;
@@ -302,32 +176,7 @@ fmi2Status unsupported(fmi2Component c, function f, const char* name, const char
 
 }  // namespace
 
-instance::instance(const loaded_fmu& definition, std::string name, std::string resource_dir,
-                   const fmi2CallbackFunctions& callbacks)
-    : loaded(definition),
-      fmu(*definition.fmu),
-      log(callbacks.logger, callbacks.componentEnvironment, name) {
-  context.instance_name = std::move(name);
-  context.resource_dir = std::move(resource_dir);
-  context.log = &log;
-}
-
-void instance::create_component() {
-  component = fmu.create(context);
-  data = static_cast<char*>(component->data());
-  values_dirty = true;
-}
-
 }  // namespace stride::sdk::glue
-
-// libstdc++ is linked statically into every FMU; its emergency exception pool would be lost on
-// each dlclose. Releasing it when the library unloads keeps importers leak-free under valgrind.
-namespace __gnu_cxx {
-void __freeres() noexcept;
-}
-__attribute__((destructor)) static void release_static_libstdcxx() {
-  __gnu_cxx::__freeres();
-}
 
 using namespace stride::sdk;
 using namespace stride::sdk::glue;
@@ -349,7 +198,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
   (void)visible;
   if (functions == nullptr) return nullptr;
   const std::string name = instanceName ? instanceName : "";
-  fmi_logger early(functions->logger, functions->componentEnvironment, name);
+  fmi_logger early(fmi2_sink(*functions, name));
   if (instanceName == nullptr || name.empty()) {
     early.error("fmi2Instantiate: missing instance name");
     return nullptr;
@@ -366,7 +215,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                   ", this binary is " + fmu.guid);
       return nullptr;
     }
-    auto inst = std::make_unique<instance>(fmu, name, resource_dir, *functions);
+    auto inst = std::make_unique<instance>(fmu, name, resource_dir, fmi2_sink(*functions, name));
     inst->log.enable_all(loggingOn != fmi2False);
     inst->create_component();
     inst->log.info("logEvents", "instantiated (resources: " + inst->context.resource_dir + ")");
@@ -423,7 +272,7 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
   try {
     inst->component->enter_initialization();
   } catch (const std::exception& e) {
-    return component_failed(*inst, "fmi2EnterInitializationMode", e);
+    return failed(*inst, "fmi2EnterInitializationMode", e);
   }
   inst->state = initialization_mode;
   return fmi2OK;
@@ -436,7 +285,7 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
     inst->component->exit_initialization();
     inst->values_dirty = false;
   } catch (const std::exception& e) {
-    return component_failed(*inst, "fmi2ExitInitializationMode", e);
+    return failed(*inst, "fmi2ExitInitializationMode", e);
   }
   inst->state = step_complete;
   return fmi2OK;
@@ -448,7 +297,7 @@ fmi2Status fmi2Terminate(fmi2Component c) {
   try {
     inst->component->terminate();
   } catch (const std::exception& e) {
-    return component_failed(*inst, "fmi2Terminate", e);
+    return failed(*inst, "fmi2Terminate", e);
   }
   inst->state = terminated;
   return fmi2OK;
@@ -461,7 +310,7 @@ fmi2Status fmi2Reset(fmi2Component c) {
     inst->component.reset();
     inst->create_component();
   } catch (const std::exception& e) {
-    return component_failed(*inst, "fmi2Reset", e);
+    return failed(*inst, "fmi2Reset", e);
   }
   inst->state = instantiated;
   inst->time = 0;
@@ -526,24 +375,8 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
   instance* inst = enter(c, function::fmu_state, "fmi2GetFMUstate");
   if (inst == nullptr) return fmi2Error;
-  if (FMUstate == nullptr) return fail(*inst, "fmi2GetFMUstate: null FMUstate pointer");
-  saved_state* target = nullptr;
-  if (*FMUstate != nullptr) {
-    target = find_state(*inst, *FMUstate);
-    if (target == nullptr) return fail(*inst, "fmi2GetFMUstate: unknown FMUstate to overwrite");
-  }
-  try {
-    std::vector<std::byte> bytes = serialize(*inst);
-    if (target == nullptr) {
-      target = new saved_state;
-      inst->saved_states.insert(target);
-    }
-    target->bytes = std::move(bytes);
-  } catch (const std::exception& e) {
-    return fail(*inst, std::string("fmi2GetFMUstate: ") + e.what());
-  }
-  *FMUstate = target;
-  return fmi2OK;
+  const std::string problem = take_state(*inst, FMUstate);
+  return problem.empty() ? fmi2OK : fail(*inst, "fmi2GetFMUstate: " + problem);
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
@@ -551,18 +384,11 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
   if (inst == nullptr) return fmi2Error;
   saved_state* s = find_state(*inst, FMUstate);
   if (s == nullptr) return fail(*inst, "fmi2SetFMUstate: unknown FMUstate");
-  state_header header;
-  std::memcpy(&header, s->bytes.data(), sizeof header);
   try {
-    inst->component->restore_state(
-        std::span<const std::byte>(s->bytes).subspan(sizeof(state_header)));
+    restore(*inst, s->bytes);
   } catch (const std::exception& e) {
-    return component_failed(*inst, "fmi2SetFMUstate", e);
+    return failed(*inst, "fmi2SetFMUstate", e);
   }
-  inst->time = header.time;
-  inst->state = header.lifecycle;
-  inst->terminate_requested = header.terminate_requested != 0;
-  inst->values_dirty = true;
   return fmi2OK;
 }
 
@@ -610,15 +436,8 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedSta
                                    fmi2FMUstate* FMUstate) {
   instance* inst = enter(c, function::fmu_state, "fmi2DeSerializeFMUstate");
   if (inst == nullptr) return fmi2Error;
-  if (FMUstate == nullptr) return fail(*inst, "fmi2DeSerializeFMUstate: null FMUstate pointer");
-  const auto* bytes = reinterpret_cast<const std::byte*>(serializedState);
-  const std::string problem = state_problem(*inst, bytes, size);
-  if (!problem.empty()) return fail(*inst, "fmi2DeSerializeFMUstate: " + problem);
-  auto* s = new saved_state;
-  s->bytes.assign(bytes, bytes + size);
-  inst->saved_states.insert(s);
-  *FMUstate = s;
-  return fmi2OK;
+  const std::string problem = load_state(*inst, serializedState, size, FMUstate);
+  return problem.empty() ? fmi2OK : fail(*inst, "fmi2DeSerializeFMUstate: " + problem);
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference[], size_t,
@@ -656,7 +475,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
   try {
     result = inst->component->do_step(t, h);
   } catch (const std::exception& e) {
-    return component_failed(*inst, "fmi2DoStep", e);
+    return failed(*inst, "fmi2DoStep", e);
   }
   inst->time = t + h;
   inst->values_dirty = true;

@@ -1,8 +1,10 @@
 // One FMU instance as the glue sees it: the component model, its lifecycle state, time and the
-// FMI callbacks. Everything FMI-specific about an instance lives here and in glue.cpp.
+// importer's logger. The same instance serves the FMI 2.0 glue (glue.cpp) and the FMI 3.0 glue
+// (glue3*.cpp); only the way a message reaches the importer differs.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -10,17 +12,18 @@
 #include <vector>
 
 #include "lifecycle.hpp"
-#include "stride/fmi2/fmi2_api.h"
 #include "stride/sdk/fmu.hpp"
 
 namespace stride::sdk::glue {
 
-/// Logger that forwards to the importer's fmi2CallbackLogger.
+/// Delivers one message to the importer's logging callback (fmi2CallbackLogger or
+/// fmi3LogMessageCallback); empty when the importer gave none.
+using log_sink = std::function<void(log_level, const char* category, const std::string& message)>;
+
+/// Logger with the FMI debug-category filter, forwarding to the importer through a log_sink.
 class fmi_logger final : public logger {
  public:
-  fmi_logger(fmi2CallbackLogger callback, fmi2ComponentEnvironment environment,
-             std::string instance_name)
-      : callback_(callback), environment_(environment), instance_name_(std::move(instance_name)) {}
+  explicit fmi_logger(log_sink sink) : sink_(std::move(sink)) {}
 
   bool enabled(const char* category) const override;
   void log(log_level level, const char* category, const std::string& message) override;
@@ -32,9 +35,7 @@ class fmi_logger final : public logger {
   void enable_all(bool on);
 
  private:
-  fmi2CallbackLogger callback_;
-  fmi2ComponentEnvironment environment_;
-  std::string instance_name_;
+  log_sink sink_;
   bool all_ = false;
   bool calls_ = false;
   std::vector<std::string> enabled_;  // a handful of names: a vector beats a set here
@@ -52,8 +53,7 @@ struct loaded_fmu {
 };
 
 struct instance {
-  instance(const loaded_fmu& definition, std::string name, std::string resource_dir,
-           const fmi2CallbackFunctions& callbacks);
+  instance(const loaded_fmu& definition, std::string name, std::string resource_dir, log_sink sink);
 
   const loaded_fmu& loaded;
   const fmu_definition& fmu;

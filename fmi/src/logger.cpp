@@ -3,20 +3,6 @@
 #include "instance.hpp"
 
 namespace stride::sdk::glue {
-namespace {
-
-// the FMI logger treats the message as a printf format: escape '%'
-std::string escape_percent(const std::string& message) {
-  std::string out;
-  out.reserve(message.size());
-  for (char c : message) {
-    out += c;
-    if (c == '%') out += '%';
-  }
-  return out;
-}
-
-}  // namespace
 
 bool fmi_logger::enabled(const char* category) const {
   if (all_) return true;
@@ -27,12 +13,7 @@ bool fmi_logger::enabled(const char* category) const {
 }
 
 void fmi_logger::log(log_level level, const char* category, const std::string& message) {
-  if (callback_ == nullptr) return;
-  const fmi2Status status = level == log_level::error     ? fmi2Error
-                            : level == log_level::warning ? fmi2Warning
-                                                          : fmi2OK;
-  callback_(environment_, instance_name_.c_str(), status, category,
-            escape_percent(message).c_str());
+  if (sink_) sink_(level, category, message);
 }
 
 std::string fmi_logger::set_debug_logging(bool on, const std::vector<std::string>& categories,

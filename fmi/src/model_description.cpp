@@ -5,27 +5,60 @@
 #include <set>
 #include <sstream>
 
+#include "model_description_parts.hpp"
 #include "start_value.hpp"
 #include "stride/common/text.hpp"
 
 namespace stride::sdk {
-namespace {
 
-using stride::text::xml_escape;  // unqualified: sdk::text is the FMI string type
-
-std::string number(double x) {
+std::string xml_number(double x) {
   char buffer[40];
   std::snprintf(buffer, sizeof buffer, "%.17g", x);
   return buffer;
 }
+
+void write_unit_definitions(std::ostringstream& xml, const std::set<std::string>& units) {
+  if (units.empty()) return;
+  xml << "  <UnitDefinitions>\n";
+  for (const std::string& u : units) {
+    xml << "    <Unit name=\"" << stride::text::xml_escape(u) << "\"/>\n";
+  }
+  xml << "  </UnitDefinitions>\n";
+}
+
+void write_log_categories(std::ostringstream& xml, const model_info& info) {
+  xml << "  <LogCategories>\n"
+      << "    <Category name=\"logStatusWarning\" description=\"Warnings\"/>\n"
+      << "    <Category name=\"logStatusError\" description=\"Errors, including rejected "
+         "calls\"/>\n"
+      << "    <Category name=\"logStatusFatal\" description=\"Fatal errors\"/>\n"
+      << "    <Category name=\"logEvents\" description=\"Lifecycle events of the instance\"/>\n"
+      << "    <Category name=\"logCalls\" description=\"Every FMI function call\"/>\n";
+  for (const auto& [name, description] : info.log_categories) {
+    xml << "    <Category name=\"" << stride::text::xml_escape(name) << "\" description=\""
+        << stride::text::xml_escape(description) << "\"/>\n";
+  }
+  xml << "  </LogCategories>\n";
+}
+
+void write_default_experiment(std::ostringstream& xml, const model_info& info) {
+  xml << "  <DefaultExperiment startTime=\"0\"";
+  if (info.default_stop_time > 0)
+    xml << " stopTime=\"" << xml_number(info.default_stop_time) << '"';
+  xml << " stepSize=\"" << xml_number(info.default_step_size) << "\"/>\n";
+}
+
+namespace {
+
+using stride::text::xml_escape;  // unqualified: sdk::text is the FMI string type
 
 void write_type_element(std::ostringstream& xml, const variable& v, const void* defaults) {
   xml << "      <" << to_string(v.type);
   if (v.has_start()) xml << " start=\"" << xml_escape(format_start_value(v, defaults)) << '"';
   if (v.type == value_type::real && !v.unit.empty()) xml << " unit=\"" << xml_escape(v.unit) << '"';
   if (v.type == value_type::real || v.type == value_type::integer) {
-    if (v.has_min) xml << " min=\"" << number(v.min) << '"';
-    if (v.has_max) xml << " max=\"" << number(v.max) << '"';
+    if (v.has_min) xml << " min=\"" << xml_number(v.min) << '"';
+    if (v.has_max) xml << " max=\"" << xml_number(v.max) << '"';
   }
   xml << "/>\n";
 }
@@ -52,28 +85,9 @@ std::string write_model_description(const fmu_definition& fmu, const std::string
   for (const variable& v : table.variables()) {
     if (v.type == value_type::real && !v.unit.empty()) units.insert(v.unit);
   }
-  if (!units.empty()) {
-    xml << "  <UnitDefinitions>\n";
-    for (const std::string& u : units) xml << "    <Unit name=\"" << xml_escape(u) << "\"/>\n";
-    xml << "  </UnitDefinitions>\n";
-  }
-
-  xml << "  <LogCategories>\n"
-      << "    <Category name=\"logStatusWarning\" description=\"Warnings\"/>\n"
-      << "    <Category name=\"logStatusError\" description=\"Errors, including rejected "
-         "calls\"/>\n"
-      << "    <Category name=\"logStatusFatal\" description=\"Fatal errors\"/>\n"
-      << "    <Category name=\"logEvents\" description=\"Lifecycle events of the instance\"/>\n"
-      << "    <Category name=\"logCalls\" description=\"Every FMI function call\"/>\n";
-  for (const auto& [name, description] : info.log_categories) {
-    xml << "    <Category name=\"" << xml_escape(name) << "\" description=\""
-        << xml_escape(description) << "\"/>\n";
-  }
-  xml << "  </LogCategories>\n";
-
-  xml << "  <DefaultExperiment startTime=\"0\"";
-  if (info.default_stop_time > 0) xml << " stopTime=\"" << number(info.default_stop_time) << '"';
-  xml << " stepSize=\"" << number(info.default_step_size) << "\"/>\n";
+  write_unit_definitions(xml, units);
+  write_log_categories(xml, info);
+  write_default_experiment(xml, info);
 
   xml << "  <ModelVariables>\n";
   for (const variable& v : table.variables()) {

@@ -121,6 +121,10 @@ variable_group table_builder_base::add(std::string name, value_type type, std::s
     v.type = type;
     v.offset = offset + i * stride;
     v.string_capacity = string_capacity;
+    if (is_array) {
+      v.array_index = i + 1;
+      v.array_size = count;
+    }
     vars_.push_back(std::move(v));
   }
   return variable_group(*this, first, count);

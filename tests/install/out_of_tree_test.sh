@@ -14,7 +14,8 @@ unset STRIDE_FMU_PATH
 cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
 prefix="$work/prefix"
 for f in bin/stride bin/stride-fmu-check share/stride/fmus/gait.fmu share/stride/fmus/robot.fmu \
-         share/stride/fmus/learner.fmu share/stride/models/walk.xml include/stride/sdk/fmu.hpp \
+         share/stride/fmus/learner.fmu share/stride/fmus/fmi3/gait.fmu share/stride/fmus/fmi3/robot.fmu \
+         share/stride/fmus/fmi3/learner.fmu share/stride/models/walk.xml include/stride/sdk/fmu.hpp \
          share/stride/examples/walk_then_turn/CMakeLists.txt share/stride/examples/gait_host/gait_host.c \
          lib/cmake/Stride/StrideConfig.cmake lib/cmake/Stride/StrideConfigVersion.cmake; do
   [ -e "$prefix/$f" ] || fail "not installed: $f"
@@ -29,6 +30,11 @@ cmake --build "$work/src/build" > "$work/build.log"
 fmu="$work/src/build/fmus/walk_then_turn.fmu"
 [ -f "$fmu" ] || fail "no $fmu"
 "$prefix/bin/stride-fmu-check" "$fmu"
+# and its FMI 3.0 FMU beside it, with the 3.0 binary layout
+fmu3="$work/src/build/fmus/fmi3/walk_then_turn.fmu"
+[ -f "$fmu3" ] || fail "no $fmu3"
+unzip -l "$fmu3" | grep -q "binaries/x86_64-linux/walk_then_turn.so" || fail "no 3.0 binary in $fmu3"
+unzip -p "$fmu3" modelDescription.xml | grep -q 'fmiVersion="3.0"' || fail "$fmu3 is not FMI 3.0"
 
 # a shipped model by its name, resolved in share/stride/models, its FMUs in share/stride/fmus
 cd "$work"

@@ -33,6 +33,10 @@ struct variable {
   initial_kind initial = initial_kind::none;
   std::size_t offset = 0;           // where the value lives inside the data struct
   std::size_t string_capacity = 0;  // for String variables stored as fixed_string
+  /// Element `array_index` (1-based) of an array of `array_size` elements; 0 and 0 for a scalar.
+  /// FMI 2.0 sees the elements as scalars; FMI 3.0 as one array variable.
+  std::size_t array_index = 0;
+  std::size_t array_size = 0;
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool has_min = false;

@@ -1,0 +1,240 @@
+#include "glue_common.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+#include "stride/sdk/model_description.hpp"
+
+namespace stride::sdk::glue {
+namespace {
+
+constexpr char k_state_magic[8] = {'S', 'T', 'R', 'D', 'S', 'T', 'A', '1'};
+
+struct state_header {
+  char magic[8];
+  char guid[40];
+  time_ns time;
+  std::uint32_t lifecycle;
+  std::uint8_t terminate_requested;
+};
+
+template <class T>
+void write_value(char* at, const variable&, T x) {
+  std::memcpy(at, &x, sizeof x);
+}
+
+// A String longer than the variable's capacity is refused, never truncated.
+void write_value(char* at, const variable& v, std::string_view s) {
+  if (s.size() > v.string_capacity) {
+    throw std::length_error("string of " + std::to_string(s.size()) +
+                            " characters exceeds the capacity of " +
+                            std::to_string(v.string_capacity));
+  }
+  std::memcpy(at, s.data(), s.size());
+  at[s.size()] = '\0';
+}
+
+}  // namespace
+
+// A generated FMU reads its interface from its resources; a compiled one has one definition.
+const loaded_fmu& definition_for(const std::string& resource_dir) {
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<const loaded_fmu>> loaded;
+  std::lock_guard lock(mutex);
+  auto& entry = loaded[resource_dir];
+  if (!entry) {
+    std::shared_ptr<const fmu_definition> fmu = detail::fmu_for(resource_dir);
+    std::string guid = compute_guid(*fmu);
+    entry = std::make_unique<const loaded_fmu>(loaded_fmu{std::move(fmu), std::move(guid)});
+  }
+  return *entry;
+}
+
+std::vector<std::string> known_log_categories(const fmu_definition& fmu) {
+  std::vector<std::string> names = {"logStatusWarning", "logStatusError", "logStatusFatal",
+                                    "logEvents", "logCalls"};
+  for (const auto& category : fmu.info.log_categories) names.push_back(category.first);
+  return names;
+}
+
+bool settable(const variable& v, std::uint32_t state) {
+  if (v.variability_kind == variability::constant) return false;
+  if (state & (instantiated | initialization_mode)) {
+    return v.causality_kind == causality::input || v.initial == initial_kind::exact ||
+           v.initial == initial_kind::approx;
+  }
+  if (state & step_complete) {
+    return v.causality_kind == causality::input ||
+           (v.causality_kind == causality::parameter && v.variability_kind == variability::tunable);
+  }
+  return false;
+}
+
+std::string describe(const variable& v) {
+  return "'" + v.name + "' (" + std::string(to_string(v.causality_kind)) + ", " +
+         std::string(to_string(v.variability_kind)) + ")";
+}
+
+std::string range_problem(const variable& v, double x) {
+  if (!std::isfinite(x)) return "value is not a finite number";
+  if (x < v.min || x > v.max) {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer, "value %.17g is outside [%.17g, %.17g]", x, v.min, v.max);
+    return buffer;
+  }
+  if (v.check) {
+    try {
+      v.check(x);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+  }
+  return {};
+}
+
+void component_failed(instance& inst, const char* function_name, const std::exception& e) {
+  inst.state = error;
+  inst.log.error(std::string(function_name) + ": " + e.what());
+}
+
+bool refresh_values(instance& inst, const char* function_name) {
+  if (!inst.values_dirty) return true;
+  try {
+    inst.component->calculate_values();
+    inst.values_dirty = false;
+    return true;
+  } catch (const std::exception& e) {
+    component_failed(inst, function_name, e);
+    return false;
+  }
+}
+
+template <class T>
+std::string store_value(instance& inst, const variable& v, T x, std::string_view state_label) {
+  if (!settable(v, inst.state)) {
+    return "variable " + describe(v) + " cannot be set in state " + std::string(state_label);
+  }
+  if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int>) {
+    std::string problem = range_problem(v, x);
+    if (!problem.empty()) return "'" + v.name + "': " + problem;
+  }
+  try {
+    write_value(inst.data + v.offset, v, x);
+    inst.component->on_set(v);
+  } catch (const std::exception& e) {
+    return "'" + v.name + "': " + e.what();
+  }
+  inst.values_dirty = true;
+  return {};
+}
+
+template std::string store_value<double>(instance&, const variable&, double, std::string_view);
+template std::string store_value<int>(instance&, const variable&, int, std::string_view);
+template std::string store_value<bool>(instance&, const variable&, bool, std::string_view);
+template std::string store_value<std::string_view>(instance&, const variable&, std::string_view,
+                                                   std::string_view);
+
+std::vector<std::byte> serialize(instance& inst) {
+  state_header header{};
+  std::memcpy(header.magic, k_state_magic, sizeof header.magic);
+  std::strncpy(header.guid, inst.loaded.guid.c_str(), sizeof header.guid - 1);
+  header.time = inst.time;
+  header.lifecycle = inst.state;
+  header.terminate_requested = inst.terminate_requested ? 1 : 0;
+  std::vector<std::byte> body = inst.component->save_state();
+  std::vector<std::byte> bytes(sizeof header + body.size());
+  std::memcpy(bytes.data(), &header, sizeof header);
+  if (!body.empty()) std::memcpy(bytes.data() + sizeof header, body.data(), body.size());
+  return bytes;
+}
+
+std::string state_problem(const instance& inst, const std::byte* bytes, std::size_t size) {
+  if (bytes == nullptr || size < sizeof(state_header)) return "too short to be an FMU state";
+  state_header header;
+  std::memcpy(&header, bytes, sizeof header);
+  if (std::memcmp(header.magic, k_state_magic, sizeof header.magic) != 0) {
+    return "not a Stride FMU state";
+  }
+  if (std::strncmp(header.guid, inst.loaded.guid.c_str(), sizeof header.guid) != 0) {
+    return "state belongs to another FMU (GUID " +
+           std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
+  }
+  return {};
+}
+
+void restore(instance& inst, const std::vector<std::byte>& image) {
+  state_header header;
+  std::memcpy(&header, image.data(), sizeof header);
+  inst.component->restore_state(std::span<const std::byte>(image).subspan(sizeof(state_header)));
+  inst.time = header.time;
+  inst.state = header.lifecycle;
+  inst.terminate_requested = header.terminate_requested != 0;
+  inst.values_dirty = true;
+}
+
+saved_state* find_state(instance& inst, void* handle) {
+  auto* state = static_cast<saved_state*>(handle);
+  return inst.saved_states.count(state) ? state : nullptr;
+}
+
+std::string take_state(instance& inst, void** handle) {
+  if (handle == nullptr) return "null FMU state pointer";
+  saved_state* target = nullptr;
+  if (*handle != nullptr) {
+    target = find_state(inst, *handle);
+    if (target == nullptr) return "unknown FMU state to overwrite";
+  }
+  try {
+    std::vector<std::byte> bytes = serialize(inst);
+    if (target == nullptr) {
+      target = new saved_state;
+      inst.saved_states.insert(target);
+    }
+    target->bytes = std::move(bytes);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  *handle = target;
+  return {};
+}
+
+std::string load_state(instance& inst, const void* bytes, std::size_t size, void** handle) {
+  if (handle == nullptr) return "null FMU state pointer";
+  const auto* begin = static_cast<const std::byte*>(bytes);
+  std::string problem = state_problem(inst, begin, size);
+  if (!problem.empty()) return problem;
+  auto* s = new saved_state;
+  s->bytes.assign(begin, begin + size);
+  inst.saved_states.insert(s);
+  *handle = s;
+  return {};
+}
+
+instance::instance(const loaded_fmu& definition, std::string name, std::string resource_dir,
+                   log_sink sink)
+    : loaded(definition), fmu(*definition.fmu), log(std::move(sink)) {
+  context.instance_name = std::move(name);
+  context.resource_dir = std::move(resource_dir);
+  context.log = &log;
+}
+
+void instance::create_component() {
+  component = fmu.create(context);
+  data = static_cast<char*>(component->data());
+  values_dirty = true;
+}
+
+}  // namespace stride::sdk::glue
+
+// libstdc++ is linked statically into every FMU; its emergency exception pool would be lost on
+// each dlclose. Releasing it when the library unloads keeps importers leak-free under valgrind.
+namespace __gnu_cxx {
+void __freeres() noexcept;
+}
+__attribute__((destructor)) static void release_static_libstdcxx() {
+  __gnu_cxx::__freeres();
+}
