@@ -263,6 +263,8 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
     return fail(*inst, "fmi2SetupExperiment: invalid start/stop time");
   }
   inst->time = to_time_ns(startTime);
+  inst->stop_time.reset();
+  if (stopTimeDefined) inst->stop_time = to_time_ns(stopTime);
   return fmi2OK;
 }
 
@@ -314,6 +316,7 @@ fmi2Status fmi2Reset(fmi2Component c) {
   }
   inst->state = instantiated;
   inst->time = 0;
+  inst->stop_time.reset();
   inst->terminate_requested = false;
   return fmi2OK;
 }
@@ -471,6 +474,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
   }
   const time_ns t = to_time_ns(currentCommunicationPoint);
   const time_ns h = to_time_ns(communicationStepSize);
+  if (past_stop_time(*inst, t + h)) {
+    return fail(*inst, "fmi2DoStep: " + past_stop_message(*inst, t + h));
+  }
   step_result result;
   try {
     result = inst->component->do_step(t, h);

@@ -179,6 +179,8 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance i, fmi3Boolean toleranceDefi
     return fail3(*inst, std::string(name) + ": invalid start/stop time");
   }
   inst->time = to_time_ns(startTime);
+  inst->stop_time.reset();
+  if (stopTimeDefined) inst->stop_time = to_time_ns(stopTime);
   try {
     inst->component->enter_initialization();
   } catch (const std::exception& e) {
@@ -224,6 +226,7 @@ fmi3Status fmi3Reset(fmi3Instance i) {
   }
   inst->state = instantiated;
   inst->time = 0;
+  inst->stop_time.reset();
   inst->terminate_requested = false;
   return fmi3OK;
 }
@@ -250,6 +253,9 @@ fmi3Status fmi3DoStep(fmi3Instance i, fmi3Float64 currentCommunicationPoint,
   }
   const time_ns t = to_time_ns(currentCommunicationPoint);
   const time_ns h = to_time_ns(communicationStepSize);
+  if (past_stop_time(*inst, t + h)) {
+    return fail3(*inst, std::string(name) + ": " + past_stop_message(*inst, t + h));
+  }
   step_result result;
   try {
     result = inst->component->do_step(t, h);

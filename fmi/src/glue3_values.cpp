@@ -45,33 +45,42 @@ bool count_ok(instance3& inst, const char* name, std::size_t needed, std::size_t
   return false;
 }
 
+// The number of values the value references name (for the message of a wrong nValues).
+std::size_t values_named(instance3& inst, const fmi3ValueReference vrs[], std::size_t nvr) {
+  std::size_t n = 0;
+  for (std::size_t r = 0; r < nvr; ++r) {
+    const fmi3_variable* v = inst.vars.find(vrs[r]);
+    n += v != nullptr ? v->count : 1;
+  }
+  return n;
+}
+
+// One pass: the values written before an error is found are allowed, an errored getter's
+// outputs are undefined (docs/fmi3-rules.md §1).
 template <class Stored, class Fmi>
 fmi3Status get3(fmi3Instance i, const fmi3ValueReference vrs[], std::size_t nvr, Fmi values[],
                 std::size_t n_values, value_type type, const char* type_name, const char* name) {
   instance3* inst = enter3(i, function3::get_value, name);
   if (inst == nullptr || !arguments_ok(*inst, name, nvr, vrs, n_values, values)) return fmi3Error;
-  std::size_t needed = 0;
-  for (std::size_t r = 0; r < nvr; ++r) {
+  if (nvr > 0 && !refresh_values(*inst, name)) return fmi3Error;
+  std::size_t at = 0, r = 0;
+  for (; r < nvr; ++r) {
     const fmi3_variable* v = lookup3(*inst, name, vrs[r], type, type_name);
     if (v == nullptr) return fmi3Error;
-    needed += v->count;
-  }
-  if (!count_ok(*inst, name, needed, n_values)) return fmi3Error;
-  if (nvr > 0 && !refresh_values(*inst, name)) return fmi3Error;
-  std::size_t at = 0;
-  for (std::size_t r = 0; r < nvr; ++r) {
-    const fmi3_variable& v = *inst->vars.find(vrs[r]);
-    for (std::size_t k = 0; k < v.count; ++k, ++at) {
+    if (at + v->count > n_values) break;
+    for (std::size_t k = 0; k < v->count; ++k, ++at) {
       if constexpr (std::is_same_v<Stored, const char*>) {
-        values[at] = string_at(inst->data, v.element(k).offset);
-      } else if (v.is_time()) {
+        values[at] = string_at(inst->data, v->element(k).offset);
+      } else if (v->is_time()) {
         values[at] = static_cast<Fmi>(to_seconds(inst->time));
       } else {
-        values[at] = static_cast<Fmi>(read_value<Stored>(inst->data, v.element(k).offset));
+        values[at] = static_cast<Fmi>(read_value<Stored>(inst->data, v->element(k).offset));
       }
     }
   }
-  return fmi3OK;
+  if (r == nvr && at == n_values) return fmi3OK;
+  count_ok(*inst, name, values_named(*inst, vrs, nvr), n_values);
+  return fmi3Error;
 }
 
 template <class Stored, class Fmi>
@@ -79,19 +88,24 @@ fmi3Status set3(fmi3Instance i, const fmi3ValueReference vrs[], std::size_t nvr,
                 std::size_t n_values, value_type type, const char* type_name, const char* name) {
   instance3* inst = enter3(i, function3::set_value, name);
   if (inst == nullptr || !arguments_ok(*inst, name, nvr, vrs, n_values, values)) return fmi3Error;
-  std::size_t needed = 0;  // sizes first: a call with the wrong nValues changes nothing
+  // sizes first: a call with the wrong nValues changes nothing; the variables of the first few
+  // references are kept for the second pass
+  constexpr std::size_t k_kept = 8;
+  const fmi3_variable* kept[k_kept];
+  std::size_t needed = 0;
   for (std::size_t r = 0; r < nvr; ++r) {
     const fmi3_variable* v = lookup3(*inst, name, vrs[r], type, type_name);
     if (v == nullptr) return fmi3Error;
     if (v->is_time()) {
       return fail3(*inst, std::string(name) + ": the independent variable 'time' cannot be set");
     }
+    if (r < k_kept) kept[r] = v;
     needed += v->count;
   }
   if (!count_ok(*inst, name, needed, n_values)) return fmi3Error;
   std::size_t at = 0;
   for (std::size_t r = 0; r < nvr; ++r) {
-    const fmi3_variable& v = *inst->vars.find(vrs[r]);
+    const fmi3_variable& v = r < k_kept ? *kept[r] : *inst->vars.find(vrs[r]);
     for (std::size_t k = 0; k < v.count; ++k, ++at) {
       Stored x;
       if constexpr (std::is_same_v<Stored, std::string_view>) {

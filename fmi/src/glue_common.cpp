@@ -7,6 +7,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "stride/common/text.hpp"
 #include "stride/sdk/model_description.hpp"
 
 namespace stride::sdk::glue {
@@ -226,6 +227,12 @@ void instance::create_component() {
   component = fmu.create(context);
   data = static_cast<char*>(component->data());
   values_dirty = true;
+}
+
+std::string past_stop_message(const instance& inst, time_ns end) {
+  return "the step ends at " + stride::text::format_double(to_seconds(end)) +
+         " s, past the stopTime " + stride::text::format_double(to_seconds(*inst.stop_time)) +
+         " s declared at initialization";
 }
 
 }  // namespace stride::sdk::glue

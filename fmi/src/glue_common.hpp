@@ -37,6 +37,14 @@ void component_failed(instance& inst, const char* function_name, const std::exce
 /// Brings feedthrough outputs up to date before a get; false (logged) when the component threw.
 bool refresh_values(instance& inst, const char* function_name);
 
+/// Whether a step ending at `end` computes past the stopTime the importer declared, which FMI
+/// 2.0 (§4.2.1) and 3.0 (§2.3.2) answer with an error.
+inline bool past_stop_time(const instance& inst, time_ns end) {
+  return inst.stop_time && end > *inst.stop_time;
+}
+/// The message for such a step.
+std::string past_stop_message(const instance& inst, time_ns end);
+
 /// Checks and writes one value of `v` (T: double, int, bool or std::string_view) and tells the
 /// component; "" on success, otherwise the reason (nothing written). `state_label` names the
 /// current state in the standard's words.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -63,6 +64,7 @@ struct instance {
   char* data = nullptr;  // base of the component's value storage
   std::uint32_t state = instantiated;
   time_ns time = 0;
+  std::optional<time_ns> stop_time;  // the importer's stopTime, when it defined one
   bool terminate_requested = false;
   bool values_dirty = true;
   std::set<saved_state*> saved_states;  // every FMUstate handed out and not yet freed

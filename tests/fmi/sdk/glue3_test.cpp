@@ -135,6 +135,19 @@ TEST(glue3, a_failing_step_puts_the_instance_in_error_until_reset) {
   EXPECT_EQ(h.step(0, 0.1), fmi3OK);
 }
 
+TEST(glue3, a_step_past_the_declared_stop_time_is_refused) {
+  fmi3_harness h;
+  ASSERT_EQ(fmi3EnterInitializationMode(h.instance(), fmi3False, 0, 0, fmi3True, 0.5), fmi3OK);
+  ASSERT_EQ(fmi3ExitInitializationMode(h.instance()), fmi3OK);
+  ASSERT_EQ(h.step(0.0, 0.25), fmi3OK);
+  ASSERT_EQ(h.step(0.25, 0.25), fmi3OK);  // ends exactly at stopTime
+  EXPECT_EQ(h.step(0.5, 0.25), fmi3Error);
+  EXPECT_TRUE(h.logged("fmi3DoStep: the step ends at 0.75 s, past the stopTime 0.5 s"));
+  ASSERT_EQ(fmi3Reset(h.instance()), fmi3OK);  // a reset forgets the stop time
+  h.to_step_mode();
+  EXPECT_EQ(h.step(0.0, 1.0), fmi3OK);
+}
+
 TEST(glue3, reset_restores_start_values) {
   fmi3_harness h;
   h.to_initialization_mode();

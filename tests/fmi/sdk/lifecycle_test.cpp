@@ -306,6 +306,21 @@ TEST(lifecycle, component_failure_enters_error_state_with_message) {
   EXPECT_EQ(fmi2DoStep(h.c(), 0.00, 0.01, fmi2True), fmi2OK);
 }
 
+TEST(lifecycle, a_step_past_the_declared_stop_time_is_refused) {
+  fmi_harness h;
+  ASSERT_EQ(fmi2SetupExperiment(h.c(), fmi2False, 0, 0, fmi2True, 0.02), fmi2OK);
+  ASSERT_EQ(fmi2EnterInitializationMode(h.c()), fmi2OK);
+  ASSERT_EQ(fmi2ExitInitializationMode(h.c()), fmi2OK);
+  EXPECT_EQ(fmi2DoStep(h.c(), 0.00, 0.01, fmi2True), fmi2OK);
+  EXPECT_EQ(fmi2DoStep(h.c(), 0.01, 0.01, fmi2True), fmi2OK);  // ends exactly at stopTime
+  EXPECT_EQ(fmi2DoStep(h.c(), 0.02, 0.01, fmi2True), fmi2Error);
+  EXPECT_TRUE(h.logged("fmi2DoStep: the step ends at 0.03 s, past the stopTime 0.02 s"));
+  EXPECT_EQ(h.get_integer("counter"), 2);  // the refused step did not run
+  ASSERT_EQ(fmi2Reset(h.c()), fmi2OK);     // a reset forgets the stop time
+  h.to_step_complete();
+  EXPECT_EQ(fmi2DoStep(h.c(), 0.00, 0.05, fmi2True), fmi2OK);
+}
+
 TEST(lifecycle, reset_restores_start_values) {
   fmi_harness h;
   h.to_step_complete();

@@ -16,7 +16,6 @@ std::string write_model_description(const fmu_definition& fmu, const std::string
 
 /// The complete FMI 3.0 modelDescription.xml: arrays as one variable with a <Dimension>, the
 /// independent variable `time`, the GUID as instantiationToken.
-std::string write_model_description3(const fmu_definition& fmu,
-                                     const std::string& generation_time);
+std::string write_model_description3(const fmu_definition& fmu, const std::string& generation_time);
 
 }  // namespace stride::sdk
