@@ -100,7 +100,7 @@ double fmu3_time_at(const fmu3_setup* s, int step) {
   return s->model.start_time + step * s->model.step_size;
 }
 
-/* Sets every variable of these causalities (and, when tunable_only, only tunable ones). */
+/* Sets every input (inputs) and every parameter (parameters) to its start value. */
 static int set_starts(const fmu3_setup* s, fmi3Instance c, const char* instance, int inputs,
                       int parameters) {
   size_t i;
@@ -225,17 +225,25 @@ static fmi3Instance start_run(const fmu3_setup* s, const char* instance, fmu3_by
   return c;
 }
 
+/* A whole run; Terminated still answers fmi3Get with the final values, those of the last step. */
 static int run_lifecycle(const fmu3_setup* s, const char* instance, trace* t) {
   int step;
+  int result = 0;
+  fmu3_bytes final = {NULL, 0, 0};
   fmi3Instance c = start_run(s, instance, &t->at[0]);
   if (c == NULL) return 1;
-  for (step = 0; step < s->steps; ++step) {
-    if (fmu3_step(s, c, instance, step, &t->at[step + 1]) != 0) {
-      s->api.fmi3FreeInstance(c);
-      return 1;
-    }
+  for (step = 0; step < s->steps && result == 0; ++step) {
+    result = fmu3_step(s, c, instance, step, &t->at[step + 1]);
   }
-  return fmu3_finish(s, c, instance);
+  result = result || fmu3_check(s->api.fmi3Terminate(c), "fmi3Terminate", instance) ||
+           read_outputs(s, c, instance, fmu3_time_at(s, s->steps), &final);
+  if (result == 0 && !same_outputs(&final, &t->at[s->steps])) {
+    result = fail("%s: the outputs read after fmi3Terminate differ from those of the last step",
+                  instance);
+  }
+  free(final.data);
+  s->api.fmi3FreeInstance(c);
+  return result;
 }
 
 /* Two instances stepped alternately in one process; b must outlive a untouched. */

@@ -6,7 +6,6 @@
  * must return NULL with a message. The count of cases is printed at the end. */
 #define _XOPEN_SOURCE 700
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,7 +31,9 @@ static const char* state_name(int state) {
 static int applies(const context* x, int needs) {
   const fmu3_model* m = &x->s->model;
   return !(((needs & n_output) && x->output == NULL) || ((needs & n_input) && x->input == NULL) ||
-           ((needs & n_array) && x->array == NULL) || ((needs & n_fixed) && x->fixed == NULL) ||
+           ((needs & n_array) && x->array == NULL) ||
+           ((needs & n_array_input) && x->array_in == NULL) ||
+           ((needs & n_fixed) && x->fixed == NULL) ||
            ((needs & n_settable) && x->settable == NULL) || ((needs & n_time) && x->time == NULL) ||
            ((needs & n_state) && !m->can_get_and_set_fmu_state) ||
            ((needs & n_no_state) && m->can_get_and_set_fmu_state) ||
@@ -189,6 +190,10 @@ int fmu3_check_misuse(const fmu3_setup* s) {
     if ((v->causality == c_output || v->causality == c_input) && v->is_array && x.array == NULL &&
         small && v->type != t_binary && v->type != t_clock) {
       x.array = v;
+    }
+    if (v->causality == c_input && v->type == t_float64 && v->is_array && small &&
+        x.array_in == NULL) {
+      x.array_in = v;
     }
     if (v->causality == c_parameter && v->variability == v_fixed && x.fixed == NULL) x.fixed = v;
     if (v->causality == c_independent) x.time = v;

@@ -19,6 +19,7 @@ typedef struct {
   const fmu3_variable* output;   /* a Float64 output */
   const fmu3_variable* input;    /* a Float64 input */
   const fmu3_variable* array;    /* an array output or input */
+  const fmu3_variable* array_in; /* a Float64 array input */
   const fmu3_variable* fixed;    /* a fixed (not tunable) parameter */
   const fmu3_variable* settable; /* an input, else a fixed parameter */
   const fmu3_variable* time;     /* the independent variable */
@@ -46,6 +47,7 @@ enum {
   n_no_adjoint = 2048,
   n_no_output_derivatives = 4096,
   n_scalar_output = 8192,
+  n_array_input = 32768,
   n_no_instance = 16384 /* NULL instance: no logger to reach, so only fmi3Error is required */
 };
 

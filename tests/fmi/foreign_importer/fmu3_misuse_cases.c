@@ -141,6 +141,10 @@ PROBE(array_n_zero, { return get_array(x, c, 0); })
 PROBE(scalar_n_two, { return F->fmi3GetFloat64(c, &x->output->vr, 1, B, 2); })
 PROBE(set_input_n_plus_one,
       { return F->fmi3SetFloat64(c, &x->input->vr, 1, B, x->input->size + 1); })
+PROBE(set_array_n_minus_one,
+      { return F->fmi3SetFloat64(c, &x->array_in->vr, 1, B, x->array_in->size - 1); })
+PROBE(set_array_n_plus_one,
+      { return F->fmi3SetFloat64(c, &x->array_in->vr, 1, B, x->array_in->size + 1); })
 PROBE(get_unknown_reference, {
   fmi3ValueReference unknown = 0x7fffffffu;
   return F->fmi3GetFloat64(c, &unknown, 1, B, 1);
@@ -293,6 +297,10 @@ const misuse_case fmu3_misuse_cases[] = {
     {"fmi3GetFloat64 of a scalar with nValues = 2", probe_scalar_n_two, at_step, n_scalar_output},
     {"fmi3SetFloat64 of an input with nValues = size + 1", probe_set_input_n_plus_one, at_step,
      n_input},
+    {"fmi3SetFloat64 of an array input with nValues = size - 1", probe_set_array_n_minus_one,
+     at_step, n_array_input},
+    {"fmi3SetFloat64 of an array input with nValues = size + 1", probe_set_array_n_plus_one,
+     at_step, n_array_input},
     /* wrong variables */
     {"fmi3GetFloat64 of an unknown value reference", probe_get_unknown_reference, at_step, 0},
     {"fmi3SetFloat64 of an unknown value reference", probe_set_unknown_reference, at_step, 0},

@@ -4,7 +4,6 @@
 #define _XOPEN_SOURCE 700
 
 #include <errno.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
