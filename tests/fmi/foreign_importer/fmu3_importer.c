@@ -213,7 +213,10 @@ static fmi3Instance start_run(const fmu3_setup* s, const char* instance, fmu3_by
   fmi3Instance c = fmu3_instantiate(s, instance);
   if (c == NULL) return NULL;
   outputs->size = 0;
-  if (set_starts(s, c, instance, 1, 1) != 0 ||
+  /* nCategories == 0: every category on (fmu3_log_message shows only the problems) */
+  if (fmu3_check(s->api.fmi3SetDebugLogging(c, fmi3True, 0, NULL), "fmi3SetDebugLogging",
+                 instance) != 0 ||
+      set_starts(s, c, instance, 1, 1) != 0 ||
       fmu3_check(s->api.fmi3EnterInitializationMode(c, fmi3False, 0.0, s->model.start_time,
                                                     fmi3False, 0.0),
                  "fmi3EnterInitializationMode", instance) != 0 ||
