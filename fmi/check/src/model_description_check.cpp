@@ -1,5 +1,6 @@
 // modelDescription.xml rules of docs/fmi-rules.md §2.1 (archive ties) and §2.2: parses the
-// text, then runs the checker of each rule family in document order.
+// text, then runs the checker of each rule family in document order. A description whose
+// fmiVersion starts with "3." goes to the FMI 3.0 checkers (model_description_check3.cpp).
 #include "model_description_check.hpp"
 
 #include <algorithm>
