@@ -69,11 +69,12 @@ std::string check_interface(md3_context& md, const XMLElement& e,
                    at(e) + ": fixedInternalStepSize=" + quote(step) + " is not a positive number");
     }
   }
-  if (e.Attribute("canSerializeFMUState") != nullptr &&
-      parse_xs_boolean(e.Attribute("canSerializeFMUState")) == true &&
-      parse_xs_boolean(e.Attribute("canGetAndSetFMUState") != nullptr
-                           ? e.Attribute("canGetAndSetFMUState")
-                           : "false") != true) {
+  // a flag that is absent or unreadable counts as false, its default
+  auto is_set = [&](const char* flag) {
+    const char* value = e.Attribute(flag);
+    return value != nullptr && parse_xs_boolean(value) == true;
+  };
+  if (is_set("canSerializeFMUState") && !is_set("canGetAndSetFMUState")) {
     md.out.error("fmi3.interface.flag",
                  at(e) + ": <" + e.Name() + "> canSerializeFMUState needs canGetAndSetFMUState");
   }
