@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "model_description_check.hpp"
+#include "model_description_check3.hpp"
 #include "reporter.hpp"
 #include "stride/fmi_check/fmu_check.hpp"
 #include "xs_values.hpp"
@@ -25,6 +26,7 @@ namespace {
 using detail::quote;
 
 constexpr std::uint64_t k_max_model_description_size = 64u * 1024u * 1024u;
+constexpr std::uint64_t k_max_binary_size = 1024u * 1024u * 1024u;
 
 struct zip_closer {
   void operator()(zip_t* z) const { zip_discard(z); }
@@ -120,6 +122,32 @@ void check_entry_data(zip_t* archive, zip_uint64_t index, const std::string& ent
   if (n < 0) {
     out.error("archive.open", entry + " cannot be decompressed: " + zip_file_strerror(file.get()));
   }
+}
+
+/// The whole content of an entry of at most `max_size` bytes; nullopt with `problem` set if it
+/// cannot be read.
+std::optional<std::string> read_entry(zip_t* archive, zip_uint64_t index, std::uint64_t max_size,
+                                      std::string& problem) {
+  zip_stat_t st;
+  zip_stat_init(&st);
+  if (zip_stat_index(archive, index, 0, &st) != 0 || (st.valid & ZIP_STAT_SIZE) == 0 ||
+      st.size > max_size) {
+    problem =
+        "cannot determine its size, or it is larger than " + std::to_string(max_size) + " bytes";
+    return std::nullopt;
+  }
+  std::unique_ptr<zip_file_t, zip_file_closer> file(zip_fopen_index(archive, index, 0));
+  if (!file) {
+    problem = zip_strerror(archive);
+    return std::nullopt;
+  }
+  std::string content(static_cast<std::size_t>(st.size), '\0');
+  const zip_int64_t read = zip_fread(file.get(), content.data(), st.size);
+  if (read < 0 || static_cast<zip_uint64_t>(read) != st.size) {
+    problem = zip_file_strerror(file.get());
+    return std::nullopt;
+  }
+  return content;
 }
 
 bool has_dot_dot_component(const std::string& name) {
@@ -236,28 +264,30 @@ std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
     return out.take();
   }
 
-  zip_stat_t st;
-  zip_stat_init(&st);
-  if (zip_stat_index(archive.get(), *model_description_index, 0, &st) != 0 ||
-      (st.valid & ZIP_STAT_SIZE) == 0 || st.size > k_max_model_description_size) {
-    out.error("archive.model_description", "cannot determine the size of modelDescription.xml");
+  std::string problem;
+  const auto xml =
+      read_entry(archive.get(), *model_description_index, k_max_model_description_size, problem);
+  if (!xml) {
+    out.error("archive.model_description", "cannot read modelDescription.xml: " + problem);
     return out.take();
   }
-  std::unique_ptr<zip_file_t, zip_file_closer> file(
-      zip_fopen_index(archive.get(), *model_description_index, 0));
-  if (!file) {
-    out.error("archive.model_description",
-              std::string("cannot read modelDescription.xml: ") + zip_strerror(archive.get()));
-    return out.take();
+  int major_version = 0;
+  std::string model_identifier;
+  out.append(detail::check_description(*xml, &listing, &major_version, &model_identifier));
+  if (major_version == 3 && !model_identifier.empty()) {
+    // the FMI 3.0 rules look into the binary too: its exported functions
+    const std::string binary = "binaries/x86_64-linux/" + model_identifier + ".so";
+    const zip_int64_t index = zip_name_locate(archive.get(), binary.c_str(), ZIP_FL_ENC_RAW);
+    if (index >= 0) {
+      const auto bytes =
+          read_entry(archive.get(), static_cast<zip_uint64_t>(index), k_max_binary_size, problem);
+      if (bytes) {
+        detail::check_exports3(out, binary, *bytes);
+      } else {
+        out.error("fmi3.exports.elf", "cannot read " + quote(binary) + ": " + problem);
+      }
+    }
   }
-  std::string xml(static_cast<std::size_t>(st.size), '\0');
-  const zip_int64_t read = zip_fread(file.get(), xml.data(), st.size);
-  if (read < 0 || static_cast<zip_uint64_t>(read) != st.size) {
-    out.error("archive.model_description",
-              std::string("cannot read modelDescription.xml: ") + zip_file_strerror(file.get()));
-    return out.take();
-  }
-  out.append(check_model_description(xml, &listing));
   return out.take();
 }
 

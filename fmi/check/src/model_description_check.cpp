@@ -1,9 +1,12 @@
 // modelDescription.xml rules of docs/fmi-rules.md §2.1 (archive ties) and §2.2: parses the
-// text, then runs the checker of each rule family in document order.
+// text, then runs the checker of each rule family in document order. A description whose
+// fmiVersion starts with "3." goes to the FMI 3.0 checkers (model_description_check3.cpp).
 #include "model_description_check.hpp"
 
 #include <algorithm>
+#include <map>
 
+#include "model_description_check3.hpp"
 #include "xs_values.hpp"
 
 namespace stride::fmi_check {
@@ -19,18 +22,24 @@ std::string describe(const variable& v) {
          std::to_string(v.index) + ")";
 }
 
-void check_attributes(reporter& out, const XMLElement& e,
-                      const std::set<std::string_view>& allowed) {
+void check_attributes(reporter& out, const XMLElement& e, const std::set<std::string_view>& allowed,
+                      std::string_view version) {
+  // the capability flags both versions have, spelt differently
+  static const std::map<std::string_view, std::string_view> k_spelt_in_3 = {
+      {"canGetAndSetFMUState", "canGetAndSetFMUstate"},
+      {"canSerializeFMUState", "canSerializeFMUstate"},
+      {"providesDirectionalDerivatives", "providesDirectionalDerivative"}};
   for (const tinyxml2::XMLAttribute* a = e.FirstAttribute(); a != nullptr; a = a->Next()) {
     const std::string_view name = a->Name();
     if (allowed.contains(name) || name.starts_with("xmlns") || name.starts_with("xsi:")) continue;
-    std::string message =
-        at(e) + ": <" + e.Name() + "> has no attribute " + quote(name) + " in FMI 2.0";
-    if (name == "canGetAndSetFMUState" || name == "canSerializeFMUState" ||
-        name == "providesDirectionalDerivatives") {
-      message +=
-          " (FMI 3.0 spelling; FMI 2.0 writes canGetAndSetFMUstate, canSerializeFMUstate, "
-          "providesDirectionalDerivative)";
+    std::string message = at(e) + ": <" + e.Name() + "> has no attribute " + quote(name) +
+                          " in FMI " + std::string(version);
+    for (const auto& [spelling3, spelling2] : k_spelt_in_3) {
+      if (version == "2.0" && name == spelling3) {
+        message += " (FMI 3.0 spelling; FMI 2.0 writes " + std::string(spelling2) + ")";
+      } else if (version == "3.0" && name == spelling2) {
+        message += " (FMI 2.0 spelling; FMI 3.0 writes " + std::string(spelling3) + ")";
+      }
     }
     out.error("schema.attribute", std::move(message));
   }
@@ -65,10 +74,8 @@ void check_child_order(reporter& out, const XMLElement& parent,
   }
 }
 
-}  // namespace detail
-
-std::vector<finding> check_model_description(std::string_view xml, const archive_listing* archive) {
-  using namespace detail;
+std::vector<finding> check_description(std::string_view xml, const archive_listing* archive,
+                                       int* major_version, std::string* model_identifier) {
   reporter out;
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
@@ -86,6 +93,13 @@ std::vector<finding> check_model_description(std::string_view xml, const archive
                                   ">, expected <fmiModelDescription>");
     return out.take();
   }
+  if (const char* version = root->Attribute("fmiVersion");
+      version != nullptr && std::string_view(version).starts_with("3.")) {
+    if (major_version != nullptr) *major_version = 3;
+    check_model_description3(out, *root, archive, model_identifier);
+    return out.take();
+  }
+  if (major_version != nullptr) *major_version = 2;
   md_context md(out);
   check_root_attributes(md, *root);
   check_child_order(
@@ -99,7 +113,14 @@ std::vector<finding> check_model_description(std::string_view xml, const archive
   check_model_variables(md, root->FirstChildElement("ModelVariables"));
   check_model_structure(md, root->FirstChildElement("ModelStructure"));
   if (archive != nullptr) check_archive_ties(out, *archive, md.model_identifier);
+  if (model_identifier != nullptr) *model_identifier = md.model_identifier;
   return out.take();
+}
+
+}  // namespace detail
+
+std::vector<finding> check_model_description(std::string_view xml, const archive_listing* archive) {
+  return detail::check_description(xml, archive, nullptr, nullptr);
 }
 
 }  // namespace stride::fmi_check

@@ -56,12 +56,18 @@ struct md_context {
 // --- shared helpers (model_description_check.cpp)
 std::string at(const XMLElement& e);
 std::string describe(const variable& v);
-/// Reports every attribute of `e` the FMI 2.0 schema does not define ("schema.attribute").
-void check_attributes(reporter& out, const XMLElement& e,
-                      const std::set<std::string_view>& allowed);
+/// Reports every attribute of `e` the schema of `version` ("2.0" or "3.0") does not define
+/// ("schema.attribute").
+void check_attributes(reporter& out, const XMLElement& e, const std::set<std::string_view>& allowed,
+                      std::string_view version = "2.0");
 /// Reports unknown, repeated and misplaced children of `parent` ("structure.child_order").
 void check_child_order(reporter& out, const XMLElement& parent,
                        std::initializer_list<std::string_view> sequence);
+
+/// check_model_description, telling also the major FMI version (2 or 3, when the root element
+/// is readable) and the CoSimulation modelIdentifier ("" if invalid); either may be null.
+std::vector<finding> check_description(std::string_view xml, const archive_listing* archive,
+                                       int* major_version, std::string* model_identifier);
 
 // --- fmiModelDescription attributes, CoSimulation, LogCategories, DefaultExperiment
 // (root_check.cpp)

@@ -90,6 +90,51 @@ std::optional<std::int32_t> parse_xs_int(std::string_view s) {
   return static_cast<std::int32_t>(v);
 }
 
+std::optional<std::int64_t> parse_xs_long(std::string_view s) {
+  s = trim(s);
+  bool negative = false;
+  if (!s.empty() && (s.front() == '+' || s.front() == '-')) {
+    negative = s.front() == '-';
+    s.remove_prefix(1);
+  }
+  if (!all_digits(s)) return std::nullopt;
+  // accumulated as a negative number: its range reaches one further than the positive one
+  constexpr std::int64_t k_min = std::numeric_limits<std::int64_t>::min();
+  std::int64_t v = 0;
+  for (char c : s) {
+    const int digit = c - '0';
+    if (v < (k_min + digit) / 10) return std::nullopt;
+    v = v * 10 - digit;
+  }
+  if (negative) return v;
+  if (v == k_min) return std::nullopt;
+  return -v;
+}
+
+std::optional<std::uint64_t> parse_xs_unsigned_long(std::string_view s) {
+  s = trim(s);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (!all_digits(s)) return std::nullopt;
+  constexpr std::uint64_t k_max = std::numeric_limits<std::uint64_t>::max();
+  std::uint64_t v = 0;
+  for (char c : s) {
+    const auto digit = static_cast<std::uint64_t>(c - '0');
+    if (v > (k_max - digit) / 10) return std::nullopt;
+    v = v * 10 + digit;
+  }
+  return v;
+}
+
+bool is_xs_hex_binary(std::string_view s) {
+  s = trim(s);
+  if (s.size() % 2 != 0) return false;
+  for (char c : s) {
+    const bool hex = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+    if (!hex) return false;
+  }
+  return true;
+}
+
 std::optional<double> parse_xs_double(std::string_view s) {
   s = trim(s);
   if (s == "INF" || s == "+INF") return std::numeric_limits<double>::infinity();

@@ -1,4 +1,4 @@
-// Parsers for the XML Schema value types used by fmi2ModelDescription.xsd.
+// Parsers for the XML Schema value types used by the FMI 2.0 and 3.0 model description schemas.
 #ifndef STRIDE_FMI_CHECK_XS_VALUES_HPP
 #define STRIDE_FMI_CHECK_XS_VALUES_HPP
 
@@ -24,6 +24,15 @@ std::optional<std::uint32_t> parse_xs_unsigned_int(std::string_view s);
 
 /// xs:int: optional sign, decimal digits, 32-bit range.
 std::optional<std::int32_t> parse_xs_int(std::string_view s);
+
+/// xs:long: optional sign, decimal digits, 64-bit range.
+std::optional<std::int64_t> parse_xs_long(std::string_view s);
+
+/// xs:unsignedLong: optional '+', decimal digits, at most 18446744073709551615.
+std::optional<std::uint64_t> parse_xs_unsigned_long(std::string_view s);
+
+/// xs:hexBinary: an even number of hex digits (surrounding whitespace allowed).
+bool is_xs_hex_binary(std::string_view s);
 
 /// xs:double: decimal or exponent notation, "INF", "-INF", "+INF", "NaN".
 std::optional<double> parse_xs_double(std::string_view s);

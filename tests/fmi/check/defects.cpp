@@ -18,8 +18,14 @@ const std::string& valid_xml() {
   return text;
 }
 
-std::string apply(const defect& d) {
-  std::string xml = valid_xml();
+const std::string& valid3_xml() {
+  static const std::string text =
+      read_text(std::filesystem::path(STRIDE_TEST_DATA_DIR) / "valid_minimal3.xml");
+  return text;
+}
+
+std::string apply(const defect& d, const std::string& base) {
+  std::string xml = base;
   for (const auto& [from, to] : d.edits) {
     if (from.starts_with("re:")) {
       const std::regex re(from.substr(3));

@@ -30,13 +30,18 @@ void PrintTo(const defect& d, std::ostream* os);
 
 /// The text of data/valid_minimal.xml.
 const std::string& valid_xml();
-/// valid_xml() with the edits of `d` applied; an edit that does not apply fails the test.
-std::string apply(const defect& d);
+/// The text of data/valid_minimal3.xml, the FMI 3.0 counterpart.
+const std::string& valid3_xml();
+/// `base` (valid_xml() by default) with the edits of `d` applied; an edit that does not apply
+/// fails the test.
+std::string apply(const defect& d, const std::string& base = valid_xml());
 /// The findings one per line, as stride-fmu-check prints them.
 std::string describe(const std::vector<finding>& findings);
 bool has_rule(const std::vector<finding>& findings, std::string_view rule, finding::severity level);
 
 class fmi_check_defect : public testing::TestWithParam<defect> {};
+/// The same for defects of valid3_xml().
+class fmi3_check_defect : public testing::TestWithParam<defect> {};
 
 /// Test name suffix: the defect's name.
 std::string defect_name(const testing::TestParamInfo<defect>& info);
@@ -48,6 +53,11 @@ extern const std::vector<defect> k_type_definitions_defects;
 extern const std::vector<defect> k_variables_defects;
 extern const std::vector<defect> k_start_values_defects;
 extern const std::vector<defect> k_model_structure_defects;
+// and of the FMI 3.0 checkers
+extern const std::vector<defect> k_root3_defects;
+extern const std::vector<defect> k_variables3_defects;
+extern const std::vector<defect> k_start_values3_defects;
+extern const std::vector<defect> k_model_structure3_defects;
 
 }  // namespace stride::fmi_check::test
 

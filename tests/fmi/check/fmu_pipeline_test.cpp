@@ -107,6 +107,30 @@ TEST_F(fmi_check_pipeline, cli_reports_findings_in_the_documented_format) {
   EXPECT_EQ(run_command(shell_quote(STRIDE_FMU_CHECK_CLI)).exit_code, 2);
 }
 
+TEST_F(fmi_check_pipeline, cli_checks_fmi3_fmus_and_lists_their_rules) {
+  auto pack3 = [&](const char* binary, const std::string& name) {
+    const auto fmu = dir_.path() / name;
+    check::test::zip_entry md;
+    md.name = "modelDescription.xml";
+    md.from_file = std::filesystem::path(STRIDE_TEST_DATA_DIR) / "valid_minimal3.xml";
+    check::test::zip_entry so;
+    so.name = "binaries/x86_64-linux/check_minimal3.so";
+    so.from_file = binary;
+    check::test::write_zip(fmu, {md, so});
+    return run_command(shell_quote(STRIDE_FMU_CHECK_CLI) + " " + shell_quote(fmu.string()));
+  };
+  const auto honest = pack3(STRIDE_FMI3_EXPORTS, "honest3.fmu");
+  EXPECT_EQ(honest.exit_code, 0) << honest.output;
+  const auto no_do_step = pack3(STRIDE_FMI3_EXPORTS_NO_DO_STEP, "no_do_step3.fmu");
+  EXPECT_EQ(no_do_step.exit_code, 1) << no_do_step.output;
+  EXPECT_NE(no_do_step.output.find("error: [fmi3.exports.functions] "), std::string::npos)
+      << no_do_step.output;
+
+  const auto rules = run_command(shell_quote(STRIDE_FMU_CHECK_CLI) + " --list-rules");
+  EXPECT_EQ(rules.exit_code, 0);
+  EXPECT_NE(rules.output.find("\nfmi3.variable.start_count  "), std::string::npos) << rules.output;
+}
+
 TEST_F(fmi_check_pipeline, importer_names_a_missing_function) {
   const auto result = import(pack("mini_fmu_no_do_step.so"));
   EXPECT_NE(result.exit_code, 0) << result.output;

@@ -4,11 +4,13 @@
 // is here.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "defects.hpp"
+#include "test_support.hpp"
 
 namespace stride::fmi_check::test {
 
@@ -55,6 +57,15 @@ TEST(fmi_check_model_description, every_defect_rule_is_a_known_rule) {
        {&k_model_description_defects, &k_root_defects, &k_type_definitions_defects,
         &k_variables_defects, &k_start_values_defects, &k_model_structure_defects}) {
     for (const defect& d : *defects) EXPECT_TRUE(ids.contains(d.rule)) << d.rule;
+  }
+}
+
+TEST(fmi_check_model_description, every_rule_is_documented) {
+  // `stride-fmu-check --list-rules` points to the rules pages: each id appears on one of them
+  const std::filesystem::path docs = std::filesystem::path(STRIDE_SOURCE_DIR) / "docs";
+  const std::string text = read_text(docs / "fmi-rules.md") + read_text(docs / "fmi3-rules.md");
+  for (const auto& r : all_rules()) {
+    EXPECT_NE(text.find(r.id), std::string::npos) << r.id << " is in neither rules page";
   }
 }
 

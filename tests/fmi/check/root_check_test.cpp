@@ -9,7 +9,10 @@ namespace stride::fmi_check::test {
 const std::vector<defect> k_root_defects = {
     // fmiModelDescription attributes
     {"bad_fmi_version", {{"fmiVersion=\"2.0\"", "fmiVersion=\"2.1\""}}, "root.fmi_version"},
-    {"fmi3_version", {{"fmiVersion=\"2.0\"", "fmiVersion=\"3.0\""}}, "root.fmi_version"},
+    // "3.0" is checked by the FMI 3.0 rules, which want an instantiationToken, not a guid
+    {"fmi3_version",
+     {{"fmiVersion=\"2.0\"", "fmiVersion=\"3.0\""}},
+     "fmi3.root.instantiation_token"},
     {"no_fmi_version", {{"fmiVersion=\"2.0\"", ""}}, "root.fmi_version"},
     {"no_model_name", {{"modelName=\"check_minimal\"", ""}}, "root.model_name"},
     {"no_guid", {{"guid=\"{8c4e810f-3df3-4a00-8276-176fa3c9f000}\"", ""}}, "root.guid"},

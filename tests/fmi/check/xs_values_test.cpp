@@ -46,6 +46,33 @@ TEST(fmi_check_xs_values, int_covers_exactly_32_bits) {
   EXPECT_FALSE(parse_xs_int("1.0"));
 }
 
+TEST(fmi_check_xs_values, long_covers_exactly_64_bits) {
+  EXPECT_EQ(parse_xs_long("-9223372036854775808"), std::numeric_limits<std::int64_t>::min());
+  EXPECT_EQ(parse_xs_long("+9223372036854775807"), std::numeric_limits<std::int64_t>::max());
+  EXPECT_EQ(parse_xs_long(" -42 "), -42);
+  EXPECT_FALSE(parse_xs_long("9223372036854775808"));
+  EXPECT_FALSE(parse_xs_long("-9223372036854775809"));
+  EXPECT_FALSE(parse_xs_long("1e3"));
+  EXPECT_FALSE(parse_xs_long("-"));
+}
+
+TEST(fmi_check_xs_values, unsigned_long_covers_exactly_64_bits) {
+  EXPECT_EQ(parse_xs_unsigned_long("18446744073709551615"),
+            std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(parse_xs_unsigned_long("+0"), 0u);
+  EXPECT_FALSE(parse_xs_unsigned_long("18446744073709551616"));
+  EXPECT_FALSE(parse_xs_unsigned_long("-1"));
+  EXPECT_FALSE(parse_xs_unsigned_long(""));
+}
+
+TEST(fmi_check_xs_values, hex_binary_is_pairs_of_hex_digits) {
+  EXPECT_TRUE(is_xs_hex_binary("666f6F"));
+  EXPECT_TRUE(is_xs_hex_binary(""));
+  EXPECT_FALSE(is_xs_hex_binary("666"));
+  EXPECT_FALSE(is_xs_hex_binary("0x66"));
+  EXPECT_FALSE(is_xs_hex_binary("66 6f"));
+}
+
 TEST(fmi_check_xs_values, double_lexical_forms) {
   EXPECT_EQ(parse_xs_double("1.5E3"), 1500.0);
   EXPECT_EQ(parse_xs_double("+.5"), 0.5);

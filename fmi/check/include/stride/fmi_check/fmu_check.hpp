@@ -1,6 +1,7 @@
-// Static checks of FMI 2.0 Co-Simulation FMUs against the project's FMI rules
-// (docs/fmi-rules.md §2): archive layout, modelDescription.xml schema and semantic rules,
-// ModelStructure consistency.
+// Static checks of FMI 2.0 and FMI 3.0 Co-Simulation FMUs against the project's FMI rules
+// (docs/fmi-rules.md §2, docs/fmi3-rules.md §8): archive layout, modelDescription.xml schema and
+// semantic rules, ModelStructure consistency, and for 3.0 the functions the binary exports.
+// The fmiVersion of the description chooses the rule set.
 #ifndef STRIDE_FMI_CHECK_FMU_CHECK_HPP
 #define STRIDE_FMI_CHECK_FMU_CHECK_HPP
 
@@ -24,7 +25,8 @@ struct finding {
 using archive_listing = std::vector<std::string>;
 
 /// Checks an .fmu file: reads the ZIP with libzip (nothing is extracted), checks the archive
-/// rules, then the modelDescription.xml at its root together with the archive listing.
+/// rules, then the modelDescription.xml at its root together with the archive listing; for an
+/// FMI 3.0 FMU also the dynamic symbols of binaries/x86_64-linux/<modelIdentifier>.so.
 /// An unreadable file is reported as a finding (rule "archive.open"), never thrown.
 std::vector<finding> check_fmu(const std::filesystem::path& fmu);
 
@@ -49,7 +51,8 @@ struct rule_description {
   std::string_view summary;
 };
 
-/// Every rule id the checker can report, in the order of docs/fmi-rules.md.
+/// Every rule id the checker can report, in the order of docs/fmi-rules.md, then of
+/// docs/fmi3-rules.md §8.
 std::span<const rule_description> all_rules();
 
 }  // namespace stride::fmi_check
