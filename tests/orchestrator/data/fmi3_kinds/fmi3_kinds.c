@@ -21,7 +21,7 @@
 #define SERIES 4
 
 /* kind, field prefix, C type, first value reference */
-#define NUMERIC_KINDS(X)          \
+#define NUMERIC_KINDS(X)           \
   X(Float32, f32, fmi3Float32, 10) \
   X(Float64, f64, fmi3Float64, 20) \
   X(Int8, i8, fmi3Int8, 30)        \
@@ -71,8 +71,8 @@ static fmi3Status fail(instance* m, const char* message) {
 }
 
 static void compute(data* d) {
-#define ADD_ONE(K, p, T, vr)                                              \
-  d->p##_out = (T)(d->p##_in + 1);                                       \
+#define ADD_ONE(K, p, T, vr)       \
+  d->p##_out = (T)(d->p##_in + 1); \
   for (int i = 0; i < 3; ++i) d->p##_aout[i] = (T)(d->p##_ain[i] + i + 1);
   NUMERIC_KINDS(ADD_ONE)
 #undef ADD_ONE
@@ -88,8 +88,8 @@ static void compute(data* d) {
 
 static void defaults(data* d) {
   memset(d, 0, sizeof *d);
-#define START(K, p, T, vr)                                 \
-  d->p##_in = (T)2;                                       \
+#define START(K, p, T, vr) \
+  d->p##_in = (T)2;        \
   for (int i = 0; i < 3; ++i) d->p##_ain[i] = (T)(10 * (i + 1));
   NUMERIC_KINDS(START)
 #undef START
@@ -127,33 +127,62 @@ typedef struct {
 static bool find(data* d, fmi3ValueReference vr, slot* s) {
   s->settable = false;
   s->parameter = false;
-#define FIND(K, p, T, base)                                                   \
-  if (vr >= base && vr < base + 4) {                                         \
-    void* at[4] = {&d->p##_in, &d->p##_out, d->p##_ain, d->p##_aout};        \
-    s->at = at[vr - base];                                                   \
-    s->count = vr - base < 2 ? 1 : 3;                                        \
-    s->k = k_##K;                                                            \
-    s->settable = (vr - base) % 2 == 0;                                      \
-    return true;                                                             \
+#define FIND(K, p, T, base)                                           \
+  if (vr >= base && vr < base + 4) {                                  \
+    void* at[4] = {&d->p##_in, &d->p##_out, d->p##_ain, d->p##_aout}; \
+    s->at = at[vr - base];                                            \
+    s->count = vr - base < 2 ? 1 : 3;                                 \
+    s->k = k_##K;                                                     \
+    s->settable = (vr - base) % 2 == 0;                               \
+    return true;                                                      \
   }
   NUMERIC_KINDS(FIND)
 #undef FIND
   switch (vr) {
-    case 0: *s = (slot){&d->time, 1, k_Float64, false, false}; return true;
-    case VR_GAIN: *s = (slot){&d->gain, 1, k_Float64, true, true}; return true;
-    case VR_STEPS: *s = (slot){&d->steps, 1, k_Int32, false, false}; return true;
-    case VR_BIG: *s = (slot){&d->big, 1, k_Int64, false, false}; return true;
-    case VR_STOP: *s = (slot){&d->stop, 1, k_Boolean, true, false}; return true;
-    case VR_N: *s = (slot){&d->n, 1, k_UInt64, false, false}; return true;
-    case VR_B_IN: *s = (slot){&d->b_in, 1, k_Boolean, true, false}; return true;
-    case VR_B_OUT: *s = (slot){&d->b_out, 1, k_Boolean, false, false}; return true;
-    case VR_S_IN: *s = (slot){d->s_in, 1, k_String, true, false}; return true;
-    case VR_S_OUT: *s = (slot){d->s_out, 1, k_String, false, false}; return true;
-    case VR_BIN_IN: *s = (slot){d->bin_in, 1, k_Binary, true, false}; return true;
-    case VR_BIN_OUT: *s = (slot){d->bin_out, 1, k_Binary, false, false}; return true;
-    case VR_SERIES_IN: *s = (slot){d->series_in, SERIES, k_Float64, true, false}; return true;
-    case VR_SERIES_OUT: *s = (slot){d->series_out, SERIES, k_Float64, false, false}; return true;
-    default: return false;
+    case 0:
+      *s = (slot){&d->time, 1, k_Float64, false, false};
+      return true;
+    case VR_GAIN:
+      *s = (slot){&d->gain, 1, k_Float64, true, true};
+      return true;
+    case VR_STEPS:
+      *s = (slot){&d->steps, 1, k_Int32, false, false};
+      return true;
+    case VR_BIG:
+      *s = (slot){&d->big, 1, k_Int64, false, false};
+      return true;
+    case VR_STOP:
+      *s = (slot){&d->stop, 1, k_Boolean, true, false};
+      return true;
+    case VR_N:
+      *s = (slot){&d->n, 1, k_UInt64, false, false};
+      return true;
+    case VR_B_IN:
+      *s = (slot){&d->b_in, 1, k_Boolean, true, false};
+      return true;
+    case VR_B_OUT:
+      *s = (slot){&d->b_out, 1, k_Boolean, false, false};
+      return true;
+    case VR_S_IN:
+      *s = (slot){d->s_in, 1, k_String, true, false};
+      return true;
+    case VR_S_OUT:
+      *s = (slot){d->s_out, 1, k_String, false, false};
+      return true;
+    case VR_BIN_IN:
+      *s = (slot){d->bin_in, 1, k_Binary, true, false};
+      return true;
+    case VR_BIN_OUT:
+      *s = (slot){d->bin_out, 1, k_Binary, false, false};
+      return true;
+    case VR_SERIES_IN:
+      *s = (slot){d->series_in, SERIES, k_Float64, true, false};
+      return true;
+    case VR_SERIES_OUT:
+      *s = (slot){d->series_out, SERIES, k_Float64, false, false};
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -174,32 +203,32 @@ static fmi3Status check_call(instance* m, const fmi3ValueReference vr[], size_t 
   return fmi3OK;
 }
 
-#define GET_SET(K, p, T, base)                                                              \
-  fmi3Status fmi3Get##K(fmi3Instance inst, const fmi3ValueReference vr[], size_t nvr,       \
-                        T values[], size_t n) {                                             \
-    instance* m = inst;                                                                     \
-    const fmi3Status s = check_call(m, vr, nvr, k_##K, n, false);                           \
-    if (s != fmi3OK) return s;                                                              \
-    for (size_t i = 0, at = 0; i < nvr; ++i) {                                              \
-      slot sl;                                                                              \
-      find(&m->d, vr[i], &sl);                                                              \
-      memcpy(values + at, sl.at, sl.count * sizeof(T));                                     \
-      at += sl.count;                                                                       \
-    }                                                                                       \
-    return fmi3OK;                                                                          \
-  }                                                                                         \
-  fmi3Status fmi3Set##K(fmi3Instance inst, const fmi3ValueReference vr[], size_t nvr,       \
-                        const T values[], size_t n) {                                       \
-    instance* m = inst;                                                                     \
-    const fmi3Status s = check_call(m, vr, nvr, k_##K, n, true);                            \
-    if (s != fmi3OK) return s;                                                              \
-    for (size_t i = 0, at = 0; i < nvr; ++i) {                                              \
-      slot sl;                                                                              \
-      find(&m->d, vr[i], &sl);                                                              \
-      memcpy(sl.at, values + at, sl.count * sizeof(T));                                     \
-      at += sl.count;                                                                       \
-    }                                                                                       \
-    return fmi3OK;                                                                          \
+#define GET_SET(K, p, T, base)                                                                    \
+  fmi3Status fmi3Get##K(fmi3Instance inst, const fmi3ValueReference vr[], size_t nvr, T values[], \
+                        size_t n) {                                                               \
+    instance* m = inst;                                                                           \
+    const fmi3Status s = check_call(m, vr, nvr, k_##K, n, false);                                 \
+    if (s != fmi3OK) return s;                                                                    \
+    for (size_t i = 0, at = 0; i < nvr; ++i) {                                                    \
+      slot sl;                                                                                    \
+      find(&m->d, vr[i], &sl);                                                                    \
+      memcpy(values + at, sl.at, sl.count * sizeof(T));                                           \
+      at += sl.count;                                                                             \
+    }                                                                                             \
+    return fmi3OK;                                                                                \
+  }                                                                                               \
+  fmi3Status fmi3Set##K(fmi3Instance inst, const fmi3ValueReference vr[], size_t nvr,             \
+                        const T values[], size_t n) {                                             \
+    instance* m = inst;                                                                           \
+    const fmi3Status s = check_call(m, vr, nvr, k_##K, n, true);                                  \
+    if (s != fmi3OK) return s;                                                                    \
+    for (size_t i = 0, at = 0; i < nvr; ++i) {                                                    \
+      slot sl;                                                                                    \
+      find(&m->d, vr[i], &sl);                                                                    \
+      memcpy(sl.at, values + at, sl.count * sizeof(T));                                           \
+      at += sl.count;                                                                             \
+    }                                                                                             \
+    return fmi3OK;                                                                                \
   }
 NUMERIC_KINDS(GET_SET)
 GET_SET(Boolean, b, fmi3Boolean, 0)
@@ -264,13 +293,16 @@ fmi3Status fmi3SetBinary(fmi3Instance inst, const fmi3ValueReference vr[], size_
 
 /* ---- life cycle ---- */
 
-const char* fmi3GetVersion(void) { return fmi3Version; }
+const char* fmi3GetVersion(void) {
+  return fmi3Version;
+}
 
-fmi3Instance fmi3InstantiateCoSimulation(
-    fmi3String name, fmi3String token, fmi3String resources, fmi3Boolean visible,
-    fmi3Boolean logging, fmi3Boolean event_mode, fmi3Boolean early_return,
-    const fmi3ValueReference required[], size_t n_required, fmi3InstanceEnvironment env,
-    fmi3LogMessageCallback log, fmi3IntermediateUpdateCallback update) {
+fmi3Instance fmi3InstantiateCoSimulation(fmi3String name, fmi3String token, fmi3String resources,
+                                         fmi3Boolean visible, fmi3Boolean logging,
+                                         fmi3Boolean event_mode, fmi3Boolean early_return,
+                                         const fmi3ValueReference required[], size_t n_required,
+                                         fmi3InstanceEnvironment env, fmi3LogMessageCallback log,
+                                         fmi3IntermediateUpdateCallback update) {
   (void)name, (void)resources, (void)visible, (void)required, (void)update;
   instance probe = {.env = env, .log = log, .logging = logging};
   if (token == NULL || strcmp(token, TOKEN) != 0) {
@@ -289,7 +321,9 @@ fmi3Instance fmi3InstantiateCoSimulation(
   return m;
 }
 
-void fmi3FreeInstance(fmi3Instance inst) { free(inst); }
+void fmi3FreeInstance(fmi3Instance inst) {
+  free(inst);
+}
 
 fmi3Status fmi3EnterInitializationMode(fmi3Instance inst, fmi3Boolean tol_defined, fmi3Float64 tol,
                                        fmi3Float64 start, fmi3Boolean stop_defined,

@@ -111,9 +111,8 @@ fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance a) {
   UNUSED(a);
   return fmi3Error;
 }
-fmi3Status fmi3UpdateDiscreteStates(fmi3Instance a, fmi3Boolean* b, fmi3Boolean* c,
-                                    fmi3Boolean* d, fmi3Boolean* e, fmi3Boolean* f,
-                                    fmi3Float64* g) {
+fmi3Status fmi3UpdateDiscreteStates(fmi3Instance a, fmi3Boolean* b, fmi3Boolean* c, fmi3Boolean* d,
+                                    fmi3Boolean* e, fmi3Boolean* f, fmi3Float64* g) {
   UNUSED(a), UNUSED(b), UNUSED(c), UNUSED(d), UNUSED(e), UNUSED(f), UNUSED(g);
   return fmi3Error;
 }
