@@ -226,5 +226,14 @@ TEST(fmi3_model_description, declared_version_is_read_without_parsing_the_rest) 
   EXPECT_EQ(declared_fmi_version("not xml"), "");
 }
 
+TEST(fmi3_model_description, the_generic_reader_hands_3_0_to_the_fmi3_reader) {
+  // what `stride inspect`, SSP import and remote placement read
+  const auto md = parse_model_description_text(kinds_xml(), "kinds");
+  EXPECT_EQ(md.fmi_version, "3.0");
+  EXPECT_NE(md.find("u8_ain[3]"), nullptr);
+  EXPECT_EQ(md.variables.size(), parse_description(kinds_xml(), "kinds").ports.size());
+  EXPECT_EQ(parse_model_description(FMI3_KINDS_MODEL_DESCRIPTION).guid, "{fmi3-kinds-7d1c}");
+}
+
 }  // namespace
 }  // namespace stride::cosim::fmi3

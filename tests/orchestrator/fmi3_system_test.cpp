@@ -6,7 +6,9 @@
 #include <fstream>
 #include <map>
 
+#include "../remote/worker_process.hpp"
 #include "fmi3_fixture.hpp"
+#include "process.hpp"
 #include "stride/cosim/run.hpp"
 #include "stride/cosim/system_structure.hpp"
 
@@ -83,6 +85,35 @@ TEST_F(fmi3_system_test, values_flow_between_fmi2_and_fmi3_components) {
   // UInt16 -> Integer: k.u16_out = 2 + 1 each step, and b counts 1 + n per step
   EXPECT_EQ(row.at("k.u16_out"), "3");
   EXPECT_EQ(row.at("b.counter"), std::to_string(10 * (1 + 3)));
+}
+
+// The same system with the FMI 3.0 component on a `stride worker` (DDS domain 120): the archive
+// is shipped to the worker and the results are those of the run in one process.
+TEST_F(fmi3_system_test, the_fmi3_component_on_a_worker_gives_the_same_csv) {
+  const std::string cli = STRIDE_CLI;
+  const std::string env = "STRIDE_FMU_PATH=" + test::quoted(test::k_fmi3_kinds.parent_path()) + " ";
+  const fs::path local_system = fs::path(STRIDE_TEST_DATA_DIR) / "fmi3_mixed.xml";
+  const fs::path remote_system = scratch.path() / "remote.xml";
+  std::ofstream(remote_system) << test::replaced(test::read_whole(local_system),
+                                                 "<component name=\"k\" fmu=\"fmi3_kinds\"",
+                                                 "<component name=\"k\" fmu=\"fmi3_kinds\" "
+                                                 "worker=\"w1\"");
+  const auto run = [&](const fs::path& system, const std::string& out, const std::string& args) {
+    return test::run_command(env + "'" + cli + "' run " + test::quoted(system) +
+                                 " --quiet --output " + test::quoted(scratch.path() / out) + " " +
+                                 args,
+                             scratch.path());
+  };
+  const auto local = run(local_system, "local", "");
+  ASSERT_EQ(local.exit_code, 0) << local.err;
+  remote::test::worker_process worker(cli, "w1", 120, scratch.path() / "w1.log");
+  ASSERT_TRUE(worker.ready()) << worker.output();
+  const auto remote = run(remote_system, "remote", "--domain 120");
+  ASSERT_EQ(remote.exit_code, 0) << remote.err << worker.output();
+  const std::string csv = test::read_whole(scratch.path() / "local" / "results.csv");
+  EXPECT_NE(csv.find("k.f32_aout[3]"), std::string::npos);
+  EXPECT_EQ(test::read_whole(scratch.path() / "remote" / "results.csv"), csv);
+  EXPECT_EQ(last_row(scratch.path() / "remote" / "results.csv").at("b.echo"), "stridestride!");
 }
 
 #endif
