@@ -198,8 +198,24 @@ std::vector<std::size_t> variables_of(const std::vector<value_io::touch>& ts,
 
 void value_io::set(fmi3Instance instance, const variable_refs& refs, const value_block& values) {
   const auto ts = touches(refs);
-  for (const auto& t : ts) store(t, values);
-  set_variables(instance, variables_of(ts, d_));
+  const auto vars = variables_of(ts, d_);
+  // a value refused half-way leaves the copies as they were: nothing reached the FMU
+  std::vector<std::vector<std::byte>> cells;
+  std::vector<std::vector<std::string>> texts;
+  for (const std::size_t v : vars) {
+    cells.push_back(cells_[v]);
+    texts.push_back(texts_[v]);
+  }
+  try {
+    for (const auto& t : ts) store(t, values);
+  } catch (...) {
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+      cells_[vars[i]] = std::move(cells[i]);
+      texts_[vars[i]] = std::move(texts[i]);
+    }
+    throw;
+  }
+  set_variables(instance, vars);
 }
 
 void value_io::get(fmi3Instance instance, const variable_refs& refs, value_block& values) {

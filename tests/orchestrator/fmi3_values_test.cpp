@@ -141,6 +141,16 @@ TEST_F(fmi3_values_test, integers_outside_the_fmi3_kind_are_refused_naming_the_p
             "<no error>");
 }
 
+TEST_F(fmi3_values_test, a_refused_batch_changes_no_element) {
+  auto c = test::stepping_fmi3_kinds(f);
+  // element 1 fits, element 3 does not: the array keeps 10 20 30
+  EXPECT_THAT(set_error(*c, batch().integer(*c, "u8_ain[1]", 1).integer(*c, "u8_ain[3]", 300)),
+              HasSubstr("value 300 of k.u8_ain[3] does not fit FMI 3 UInt8"));
+  variable_refs out;
+  out.integers = {test::ref(*c, "u8_aout[1]")};
+  EXPECT_EQ(step_with(*c, batch().integer(*c, "u8_ain[2]", 0), out).integers[0], 10 + 1);
+}
+
 TEST_F(fmi3_values_test, fmi3_integers_beyond_32_bits_are_refused_when_read) {
   auto c = test::stepping_fmi3_kinds(f);
   variable_refs big;
