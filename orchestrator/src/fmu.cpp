@@ -61,8 +61,9 @@ class fmu::impl {
   stride::cosim::model_description md;
   void* library = nullptr;
   fmi2_functions fn;
-  std::atomic<int> instances{0};       // runs on several threads may share one import
-  std::shared_ptr<fmi3::binary> fmi3;  // an FMI 3.0 archive: its own loader (fmi3_fmu.cpp)
+  std::atomic<int> instances{0};  // runs on several threads may share one import
+  // set for an FMI 3.0 archive, which has its own loader and component (fmi3_fmu.cpp)
+  std::shared_ptr<fmi3::binary> fmi3;
 
   explicit impl(temp_dir d) : dir(std::move(d)) {}
   ~impl();
