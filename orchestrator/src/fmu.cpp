@@ -12,6 +12,8 @@
 #include <mutex>
 #include <vector>
 
+#include "fmi3_fmu.hpp"
+#include "stride/common/files.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/fmi2/fmi2_api.h"
 #include "stride/fmi2/vocabulary.hpp"
@@ -60,6 +62,8 @@ class fmu::impl {
   void* library = nullptr;
   fmi2_functions fn;
   std::atomic<int> instances{0};  // runs on several threads may share one import
+  // set for an FMI 3.0 archive, which has its own loader and component (fmi3_fmu.cpp)
+  std::shared_ptr<fmi3::binary> fmi3;
 
   explicit impl(temp_dir d) : dir(std::move(d)) {}
   ~impl();
@@ -358,6 +362,12 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
   if (!fs::is_regular_file(md_file)) {
     throw fmu_import_error(where + ": no modelDescription.xml at the archive root");
   }
+  if (const std::string xml = common::read_file(md_file);
+      fmi3::declared_fmi_version(xml).starts_with("3")) {
+    p->fmi3 = fmi3::load(file, p->dir.path(), xml, library_mutex());
+    p->md = p->fmi3->description.scalar;
+    return std::shared_ptr<fmu>(new fmu(std::move(p)));
+  }
   try {
     p->md = parse_model_description(md_file);
   } catch (const fmu_import_error& e) {
@@ -417,7 +427,10 @@ std::unique_ptr<component> fmu::instantiate(const std::string& instance_name,
     throw component_error("component '" + instance_name + "': " + pimpl_->file.string() +
                           " can be instantiated only once per process");
   }
-  auto c = std::make_unique<fmu_component>(shared_from_this(), *pimpl_, instance_name, options);
+  std::unique_ptr<component> c =
+      pimpl_->fmi3
+          ? fmi3::instantiate(shared_from_this(), *pimpl_->fmi3, instance_name, options)
+          : std::make_unique<fmu_component>(shared_from_this(), *pimpl_, instance_name, options);
   ++pimpl_->instances;
   return c;
 }

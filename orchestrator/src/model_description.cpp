@@ -10,6 +10,8 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "fmi3_model_description.hpp"
+#include "stride/common/files.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
@@ -251,11 +253,19 @@ model_description parse_model_description(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) {
     throw fmu_import_error(file.string() + ": file not found");
   }
+  // an FMI 3.0 model description has its own reader; this is its view as scalar ports
+  if (const std::string xml = common::read_file(file);
+      fmi3::declared_fmi_version(xml).starts_with("3")) {
+    return fmi3::parse_description(xml, file.string()).scalar;
+  }
   doc.LoadFile(file.c_str());
   return parse(doc, file.string());
 }
 
 model_description parse_model_description_text(std::string_view xml, const std::string& origin) {
+  if (fmi3::declared_fmi_version(xml).starts_with("3")) {
+    return fmi3::parse_description(xml, origin).scalar;
+  }
   tinyxml2::XMLDocument doc;
   doc.Parse(xml.data(), xml.size());
   return parse(doc, origin);

@@ -1,4 +1,4 @@
-// Import of FMI 2.0 Co-Simulation FMUs: unzip, parse, dlopen, instantiate.
+// Import of FMI 2.0 and FMI 3.0 Co-Simulation FMUs: unzip, parse, dlopen, instantiate.
 #ifndef STRIDE_COSIM_FMU_HPP
 #define STRIDE_COSIM_FMU_HPP
 
@@ -32,7 +32,8 @@ class fmu : public std::enable_shared_from_this<fmu> {
  public:
   /// Unzips `file` into a private temporary directory, parses modelDescription.xml, checks
   /// fmiVersion 2.0 and CoSimulation, opens binaries/linux64/<modelIdentifier>.so with
-  /// RTLD_LOCAL and resolves all 34 FMI 2.0 CS functions.
+  /// RTLD_LOCAL and resolves all 34 FMI 2.0 CS functions. An archive declaring fmiVersion 3.x
+  /// is read as FMI 3.0 instead (binaries/x86_64-linux/, docs/fmu-interop.md).
   /// \throws fmu_import_error naming the FMU file and what is wrong.
   static std::shared_ptr<fmu> load(const std::filesystem::path& file,
                                    const fmu_import_options& options = {});

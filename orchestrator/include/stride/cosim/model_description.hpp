@@ -108,7 +108,9 @@ struct model_description {
 };
 
 /// Reads modelDescription.xml. Checks fmiVersion 2.0, a non-empty GUID, unique variable names,
-/// well-formed value references, known enumerator names and ModelStructure indices.
+/// well-formed value references, known enumerator names and ModelStructure indices. An FMI 3.0
+/// model description (fmiVersion 3.x) is read by the FMI 3.0 reader instead and returned as its
+/// scalar ports (one per array element; docs/fmu-interop.md).
 /// \throws fmu_import_error naming the file and line.
 model_description parse_model_description(const std::filesystem::path& file);
 /// Reads a modelDescription.xml held in memory; `origin` names it in error messages.

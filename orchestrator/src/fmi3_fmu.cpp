@@ -1,0 +1,81 @@
+#include "fmi3_fmu.hpp"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "stride/cosim/error.hpp"
+
+namespace stride::cosim::fmi3 {
+
+namespace fs = std::filesystem;
+
+binary::~binary() {
+  if (library == nullptr) return;
+  const std::lock_guard lock(*library_mutex);
+  ::dlclose(library);
+}
+
+namespace {
+
+// It names the binary: a path here would load a library from outside the archive.
+bool is_identifier(const std::string& id) {
+  return !id.empty() && !std::isdigit(static_cast<unsigned char>(id[0])) &&
+         std::all_of(id.begin(), id.end(), [](char c) {
+           return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+         });
+}
+
+}  // namespace
+
+std::shared_ptr<binary> load(const fs::path& file, const fs::path& dir, const std::string& xml,
+                             std::mutex& library_mutex) {
+  const std::string where = file.string();
+  auto b = std::make_shared<binary>();
+  b->file = fs::absolute(file);
+  b->library_mutex = &library_mutex;
+  b->description = parse_description(xml, where + "!modelDescription.xml");
+  const auto& md = b->description.scalar;
+  if (!md.co_simulation) {
+    throw fmu_import_error(where +
+                           ": not a Co-Simulation FMU (no <CoSimulation> element); FMI 3.0 "
+                           "Model Exchange and Scheduled Execution are not supported");
+  }
+  const std::string& id = md.co_simulation->model_identifier;
+  if (!is_identifier(id)) {
+    throw fmu_import_error(where + ": modelIdentifier \"" + id +
+                           "\" is not a C identifier (it names the binary)");
+  }
+  if (fs::is_directory(dir / "resources")) b->resources = dir / "resources";
+  const std::string relative = "binaries/x86_64-linux/" + id + ".so";
+  const fs::path so = dir / "binaries" / "x86_64-linux" / (id + ".so");
+  if (!fs::is_regular_file(so)) {
+    throw fmu_import_error(where + ": missing binary " + relative +
+                           " (the FMU has no binary for this platform)");
+  }
+  {
+    const std::lock_guard lock(library_mutex);
+    b->library = ::dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
+  if (b->library == nullptr) {
+    const char* why = ::dlerror();
+    throw fmu_import_error(where + ": cannot load " + relative + ": " +
+                           (why ? why : "unknown error"));
+  }
+#define STRIDE_RESOLVE(name)                                                     \
+  b->fn.name = reinterpret_cast<name##TYPE*>(::dlsym(b->library, #name));        \
+  if (b->fn.name == nullptr) {                                                   \
+    throw fmu_import_error(where + ": " + relative + " does not export " #name); \
+  }
+  STRIDE_FMI3_IMPORTED_FUNCTIONS(STRIDE_RESOLVE)
+#undef STRIDE_RESOLVE
+  const char* version = b->fn.fmi3GetVersion();
+  if (version == nullptr || std::string(version) != "3.0") {
+    throw fmu_import_error(where + ": fmi3GetVersion() returns \"" + (version ? version : "") +
+                           "\", not \"3.0\"");
+  }
+  return b;
+}
+
+}  // namespace stride::cosim::fmi3

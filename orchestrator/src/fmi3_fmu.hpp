@@ -1,0 +1,97 @@
+// Import of FMI 3.0 Co-Simulation FMUs (docs/fmi3-rules.md), the leaf beside the 2.0 one in
+// fmu.cpp: `fmu::load` reads the archive's fmiVersion and hands a 3.0 archive to `load_fmi3`;
+// `fmu::instantiate` then makes its instances with `instantiate_fmi3`.
+#ifndef STRIDE_COSIM_SRC_FMI3_FMU_HPP
+#define STRIDE_COSIM_SRC_FMI3_FMU_HPP
+
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "fmi3_model_description.hpp"
+#include "stride/cosim/fmu.hpp"
+#include "stride/fmi3/fmi3_api.h"
+
+namespace stride::cosim::fmi3 {
+
+// The entry points Stride calls (a Co-Simulation importer without events or clocks).
+#define STRIDE_FMI3_IMPORTED_FUNCTIONS(X) \
+  X(fmi3GetVersion)                       \
+  X(fmi3InstantiateCoSimulation)          \
+  X(fmi3FreeInstance)                     \
+  X(fmi3EnterInitializationMode)          \
+  X(fmi3ExitInitializationMode)           \
+  X(fmi3Terminate)                        \
+  X(fmi3GetFloat32)                       \
+  X(fmi3GetFloat64)                       \
+  X(fmi3GetInt8)                          \
+  X(fmi3GetUInt8)                         \
+  X(fmi3GetInt16)                         \
+  X(fmi3GetUInt16)                        \
+  X(fmi3GetInt32)                         \
+  X(fmi3GetUInt32)                        \
+  X(fmi3GetInt64)                         \
+  X(fmi3GetUInt64)                        \
+  X(fmi3GetBoolean)                       \
+  X(fmi3GetString)                        \
+  X(fmi3GetBinary)                        \
+  X(fmi3SetFloat32)                       \
+  X(fmi3SetFloat64)                       \
+  X(fmi3SetInt8)                          \
+  X(fmi3SetUInt8)                         \
+  X(fmi3SetInt16)                         \
+  X(fmi3SetUInt16)                        \
+  X(fmi3SetInt32)                         \
+  X(fmi3SetUInt32)                        \
+  X(fmi3SetInt64)                         \
+  X(fmi3SetUInt64)                        \
+  X(fmi3SetBoolean)                       \
+  X(fmi3SetString)                        \
+  X(fmi3SetBinary)                        \
+  X(fmi3GetFMUState)                      \
+  X(fmi3SetFMUState)                      \
+  X(fmi3FreeFMUState)                     \
+  X(fmi3SerializedFMUStateSize)           \
+  X(fmi3SerializeFMUState)                \
+  X(fmi3DeserializeFMUState)              \
+  X(fmi3DoStep)
+
+struct functions {
+#define STRIDE_DECLARE_POINTER(name) name##TYPE* name = nullptr;
+  STRIDE_FMI3_IMPORTED_FUNCTIONS(STRIDE_DECLARE_POINTER)
+#undef STRIDE_DECLARE_POINTER
+};
+
+/// A loaded FMI 3.0 binary with its parsed model description.
+struct binary {
+  std::filesystem::path file;       ///< the .fmu, for messages
+  std::filesystem::path resources;  ///< extracted resources/ folder; empty if none
+  fmi3::description description;
+  functions fn;
+  void* library = nullptr;
+  std::mutex* library_mutex = nullptr;  ///< serializes dlopen/dlclose with the 2.0 loader
+
+  binary() = default;
+  binary(const binary&) = delete;
+  binary& operator=(const binary&) = delete;
+  ~binary();
+};
+
+/// Parses `xml` (the archive's modelDescription.xml), refuses what Stride does not offer (no
+/// <CoSimulation>, clocks), opens binaries/x86_64-linux/<modelIdentifier>.so from `dir` with
+/// RTLD_LOCAL and resolves the functions above.
+/// \throws fmu_import_error naming `file` and the feature or defect.
+std::shared_ptr<binary> load(const std::filesystem::path& file, const std::filesystem::path& dir,
+                             const std::string& xml, std::mutex& library_mutex);
+
+/// One instance of `bin` as a component (fmi3InstantiateCoSimulation with visible=false,
+/// eventModeUsed=false, earlyReturnAllowed=false, no intermediate update). `owner` keeps the
+/// extraction and the binary alive.
+/// \throws component_error naming the instance if the FMU refuses.
+std::unique_ptr<component> instantiate(std::shared_ptr<const void> owner, const binary& bin,
+                                       const std::string& name, const instance_options& options);
+
+}  // namespace stride::cosim::fmi3
+
+#endif  // STRIDE_COSIM_SRC_FMI3_FMU_HPP
