@@ -149,9 +149,16 @@ void hand_written_walk(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * k_walk_steps);
 }
 
-// runs a system file for k_walk_steps base steps per iteration, built afresh each time
-void run_system_file(benchmark::State& state, const char* file, int threads) {
+// runs a system file for k_walk_steps base steps per iteration, built afresh each time; with
+// `fmu_folder`, every component's FMU is taken from that folder of the build's FMUs
+void run_system_file(benchmark::State& state, const char* file, int threads,
+                     const char* fmu_folder = nullptr) {
   auto s = parse_system_file(fs::path(STRIDE_SOURCE_DIR) / "models" / file);
+  if (fmu_folder != nullptr) {
+    for (component_spec& c : s.components) {
+      c.fmu = (fs::path(STRIDE_FMU_DIR) / fmu_folder / (c.fmu + ".fmu")).string();
+    }
+  }
   s.stop = time_point{} + k_walk_steps * k_walk_step;
   s.record = {};
   build_options o;
@@ -174,6 +181,11 @@ void stride_walk(benchmark::State& state) {
   run_system_file(state, "walk.xml", 1);
 }
 
+// the same walk with gait and robot from their FMI 3.0 FMUs
+void stride_walk_fmi3(benchmark::State& state) {
+  run_system_file(state, "walk.xml", 1, "fmi3");
+}
+
 // models/walkers.xml: four independent walkers (gait + robot each), 10 s, on 1 or 2 threads.
 // Wall time: the point is that two threads finish sooner.
 void stride_walkers(benchmark::State& state) {
@@ -186,6 +198,7 @@ BENCHMARK(hand_written_loop)->Unit(benchmark::kMillisecond);
 BENCHMARK(stride_execution)->Unit(benchmark::kMillisecond);
 BENCHMARK(hand_written_walk)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(stride_walk)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK(stride_walk_fmi3)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(stride_walkers)
     ->Arg(1)
     ->Arg(2)
