@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "md_reader_base.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
@@ -128,35 +129,7 @@ using detail::attribute_or;
 // every element is a port with its own name: far larger arrays are not signals to connect
 constexpr std::size_t max_elements = std::size_t{1} << 20;
 
-struct reader {
-  std::string origin;
-
-  [[noreturn]] void fail(int line, const std::string& message) const {
-    std::string where = origin;
-    if (line > 0) where += ":" + std::to_string(line);
-    throw fmu_import_error(where + ": " + message);
-  }
-
-  bool parse_bool(const tinyxml2::XMLElement* e, const char* name) const {
-    const char* v = e->Attribute(name);
-    if (v == nullptr) return false;
-    const std::string_view s(v);
-    if (s == "true" || s == "1") return true;
-    if (s == "false" || s == "0") return false;
-    fail(e->GetLineNum(), std::string("attribute ") + name + "=\"" + v + "\" is not a boolean");
-  }
-
-  std::optional<double> parse_double(const tinyxml2::XMLElement* e, const char* name) const {
-    const char* v = e->Attribute(name);
-    if (v == nullptr) return std::nullopt;
-    const auto d = text::parse_double(v);
-    if (!d || !std::isfinite(*d)) {
-      fail(e->GetLineNum(),
-           std::string("attribute ") + name + "=\"" + v + "\" is not a finite number");
-    }
-    return *d;
-  }
-
+struct reader : detail::md_reader_base {
   value_reference parse_reference(const std::string& text, int line,
                                   const std::string& what) const {
     value_reference vr = 0;
@@ -468,7 +441,7 @@ std::string declared_fmi_version(std::string_view xml) {
 description parse_description(std::string_view xml, const std::string& origin) {
   tinyxml2::XMLDocument doc;
   doc.Parse(xml.data(), xml.size());
-  const reader r{origin};
+  const reader r{{origin}};
   if (doc.Error()) r.fail(doc.ErrorLineNum(), "malformed XML: " + detail::describe_error(doc));
   return r.read(doc);
 }

@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "fmi3_model_description.hpp"
+#include "md_reader_base.hpp"
 #include "stride/common/files.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
@@ -48,36 +49,7 @@ namespace {
 using detail::attribute;
 using detail::attribute_or;
 
-struct md_reader {
-  std::string origin;
-
-  [[noreturn]] void fail(int line, const std::string& message) const {
-    std::string where = origin;
-    if (line > 0) where += ":" + std::to_string(line);
-    throw fmu_import_error(where + ": " + message);
-  }
-
-  bool parse_bool(const tinyxml2::XMLElement* e, const char* name, bool fallback) const {
-    const char* v = e->Attribute(name);
-    if (v == nullptr) return fallback;
-    const std::string s(v);
-    if (s == "true" || s == "1") return true;
-    if (s == "false" || s == "0") return false;
-    fail(e->GetLineNum(), std::string("attribute ") + name + "=\"" + s + "\" is not a boolean");
-  }
-
-  std::optional<double> parse_double(const tinyxml2::XMLElement* e, const char* name) const {
-    const char* v = e->Attribute(name);
-    if (v == nullptr) return std::nullopt;
-    // xs:double would allow INF and NaN; a default experiment needs finite times and steps
-    const auto d = text::parse_double(v);
-    if (!d || !std::isfinite(*d)) {
-      fail(e->GetLineNum(),
-           std::string("attribute ") + name + "=\"" + v + "\" is not a finite number");
-    }
-    return *d;
-  }
-
+struct md_reader : detail::md_reader_base {
   // An absent attribute takes `fallback`; a misspelt one is an error.
   template <class Enum>
   Enum parse_enum(const tinyxml2::XMLElement* e, const char* name, Enum fallback,
@@ -239,7 +211,7 @@ struct md_reader {
 };
 
 model_description parse(const tinyxml2::XMLDocument& doc, const std::string& origin) {
-  md_reader reader{origin};
+  md_reader reader{{origin}};
   if (doc.Error()) {
     reader.fail(doc.ErrorLineNum(), "malformed XML: " + detail::describe_error(doc));
   }

@@ -293,6 +293,40 @@ std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
 
 namespace detail {
 
+void check_binary_layout(reporter& out, const archive_listing& archive,
+                         std::string_view model_identifier, const binary_layout& layout) {
+  const std::string prefix(layout.rule_prefix);
+  std::set<std::string, std::less<>> reported;
+  for (const std::string& entry : archive) {
+    if (!entry.starts_with("binaries/")) continue;
+    const std::string_view rest = std::string_view(entry).substr(9);
+    const auto slash = rest.find('/');
+    if (slash == std::string_view::npos) continue;
+    const std::string_view dir = rest.substr(0, slash);
+    const auto it = layout.foreign_dirs.find(dir);
+    if (it != layout.foreign_dirs.end() && reported.emplace(dir).second) {
+      out.error(prefix + "archive.platform_dir",
+                "binaries/" + std::string(dir) + "/ is " + std::string(layout.foreign_kind) + "; " +
+                    std::string(layout.version) + " importers only look in binaries/" +
+                    std::string(it->second) + "/");
+    }
+  }
+  if (model_identifier.empty()) return;
+  const std::string binary =
+      "binaries/" + std::string(layout.platform_dir) + "/" + std::string(model_identifier) + ".so";
+  if (std::find(archive.begin(), archive.end(), binary) == archive.end()) {
+    std::string hint;
+    for (const std::string& entry : archive) {
+      if (entry.starts_with("binaries/") && entry.ends_with(".so")) {
+        hint += (hint.empty() ? " (found: " : ", ") + entry;
+      }
+    }
+    if (!hint.empty()) hint += ")";
+    out.error(prefix + "archive.binary", "the archive has no " + binary +
+                                             " (named after CoSimulation@modelIdentifier)" + hint);
+  }
+}
+
 void check_archive_ties(reporter& out, const archive_listing& archive,
                         std::string_view model_identifier) {
   // FMI 3 platform tuples for platforms that have an FMI 2 name are not searched by FMI 2 tools
@@ -302,34 +336,8 @@ void check_archive_ties(reporter& out, const archive_listing& archive,
       {"x86_64-windows", "win64"},
       {"x86-windows", "win32"},
       {"x86_64-darwin", "darwin64"}};
-  std::set<std::string, std::less<>> reported;
-  for (const std::string& entry : archive) {
-    if (!entry.starts_with("binaries/")) continue;
-    const std::string_view rest = std::string_view(entry).substr(9);
-    const auto slash = rest.find('/');
-    if (slash == std::string_view::npos) continue;
-    const std::string_view dir = rest.substr(0, slash);
-    const auto it = k_fmi3_tuples.find(dir);
-    if (it != k_fmi3_tuples.end() && reported.emplace(dir).second) {
-      out.error("archive.platform_dir", "binaries/" + std::string(dir) +
-                                            "/ is an FMI 3 platform tuple; FMI 2 importers "
-                                            "only look in binaries/" +
-                                            std::string(it->second) + "/");
-    }
-  }
-  if (model_identifier.empty()) return;
-  const std::string binary = "binaries/linux64/" + std::string(model_identifier) + ".so";
-  if (std::find(archive.begin(), archive.end(), binary) == archive.end()) {
-    std::string hint;
-    for (const std::string& entry : archive) {
-      if (entry.starts_with("binaries/") && entry.ends_with(".so")) {
-        hint += (hint.empty() ? " (found: " : ", ") + entry;
-      }
-    }
-    if (!hint.empty()) hint += ")";
-    out.error("archive.binary", "the archive has no " + binary +
-                                    " (named after CoSimulation@modelIdentifier)" + hint);
-  }
+  check_binary_layout(out, archive, model_identifier,
+                      {"linux64", k_fmi3_tuples, "an FMI 3 platform tuple", "FMI 2", ""});
 }
 
 }  // namespace detail

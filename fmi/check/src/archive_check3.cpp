@@ -101,34 +101,9 @@ void check_archive_ties3(reporter& out, const archive_listing& archive,
       {"win64", "x86_64-windows"},
       {"win32", "x86-windows"},
       {"darwin64", "x86_64-darwin"}};
-  std::set<std::string, std::less<>> reported;
-  for (const std::string& entry : archive) {
-    if (!entry.starts_with("binaries/")) continue;
-    const std::string_view rest = std::string_view(entry).substr(9);
-    const auto slash = rest.find('/');
-    if (slash == std::string_view::npos) continue;
-    const std::string_view dir = rest.substr(0, slash);
-    const auto it = k_fmi2_folders.find(dir);
-    if (it != k_fmi2_folders.end() && reported.emplace(dir).second) {
-      out.error("fmi3.archive.platform_dir", "binaries/" + std::string(dir) +
-                                                 "/ is an FMI 2.0 platform folder; FMI 3.0 "
-                                                 "importers only look in binaries/" +
-                                                 std::string(it->second) + "/");
-    }
-  }
-  if (model_identifier.empty()) return;
-  const std::string binary = "binaries/x86_64-linux/" + std::string(model_identifier) + ".so";
-  if (std::find(archive.begin(), archive.end(), binary) == archive.end()) {
-    std::string found;
-    for (const std::string& entry : archive) {
-      if (entry.starts_with("binaries/") && entry.ends_with(".so")) {
-        found += (found.empty() ? " (found: " : ", ") + entry;
-      }
-    }
-    if (!found.empty()) found += ")";
-    out.error("fmi3.archive.binary", "the archive has no " + binary +
-                                         " (named after CoSimulation@modelIdentifier)" + found);
-  }
+  check_binary_layout(
+      out, archive, model_identifier,
+      {"x86_64-linux", k_fmi2_folders, "an FMI 2.0 platform folder", "FMI 3.0", "fmi3."});
 }
 
 void check_exports3(reporter& out, std::string_view entry, std::string_view bytes) {

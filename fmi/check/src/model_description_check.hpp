@@ -94,7 +94,19 @@ void check_values(md_context& md, const variable& v);
 void check_model_structure(md_context& md, const XMLElement* ms);
 
 // --- the archive next to the description (archive_check.cpp)
+/// How one FMI version lays out its binaries, for check_binary_layout.
+struct binary_layout {
+  std::string_view platform_dir;  ///< "linux64" (2.0) or "x86_64-linux" (3.0)
+  /// the other version's folder names that this version's importers do not look into, each
+  /// with this version's name for the same platform
+  const std::map<std::string_view, std::string_view>& foreign_dirs;
+  std::string_view foreign_kind;  ///< what those folders are, for the message
+  std::string_view version;       ///< "FMI 2" or "FMI 3.0", for the message
+  std::string_view rule_prefix;   ///< "" (2.0) or "fmi3." (3.0)
+};
 /// Platform folders and the binary named after CoSimulation@modelIdentifier ("" if invalid).
+void check_binary_layout(reporter& out, const archive_listing& archive,
+                         std::string_view model_identifier, const binary_layout& layout);
 void check_archive_ties(reporter& out, const archive_listing& archive,
                         std::string_view model_identifier);
 
