@@ -1,4 +1,5 @@
-/* x' = -k x, x(0) = x0: closed form x0 exp(-k t). With a large k it is stiff. */
+/* x' = -k x + u, x(0) = 1: with u = 0 the closed form is exp(-k t); with a large k it is
+ * stiff. The input u changes only at communication points. */
 #include "me_model.h"
 
 const char* const me_guid = "{stride-me-decay}";
@@ -12,7 +13,7 @@ void me_start(me_data* m) {
   m->r[2] = 1.0; /* k */
 }
 void me_equations(me_data* m) {
-  m->r[1] = -m->r[2] * m->r[0];
+  m->r[1] = -m->r[2] * m->r[0] + m->r[3]; /* u: r[3] */
 }
 void me_indicators(const me_data* m, double z[]) {
   (void)m;
