@@ -264,8 +264,12 @@ TEST_F(cosim_import, model_description_problems_are_named) {
   EXPECT_THAT(with("v1", replaced("fmiVersion=\"2.0\"", "fmiVersion=\"1.0\"")),
               HasSubstr("v1.fmu!modelDescription.xml:2: fmiVersion is \"1.0\""));
   EXPECT_THAT(with("noguid", replaced("guid=\"{1234}\"", "")), HasSubstr("missing or empty guid"));
+  // a Model Exchange-only FMU is imported (docs/model-exchange.md): it fails later, here at
+  // its missing binary; one with neither interface is refused
   EXPECT_THAT(with("me", replaced("<CoSimulation", "<ModelExchange")),
-              HasSubstr("not a Co-Simulation FMU"));
+              HasSubstr("missing binary binaries/linux64/demo.so"));
+  EXPECT_THAT(with("neither", replaced("<CoSimulation", "<Other")),
+              HasSubstr("neither <CoSimulation> nor <ModelExchange> is declared"));
   EXPECT_THAT(with("badindex", replaced("index=\"3\"", "index=\"9\"")),
               HasSubstr("ModelStructure index \"9\" is not a variable position 1..6"));
   EXPECT_THAT(with("dup", replaced("name=\"n\"", "name=\"u\"")),
