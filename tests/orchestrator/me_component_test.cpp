@@ -200,6 +200,50 @@ TEST_F(me_component_test, euler_without_a_step_is_refused) {
   EXPECT_THROW(make(*f, "decay", o), component_error);
 }
 
+// k = NaN makes the FMU's derivative NaN: refused at once, naming the derivative
+TEST_F(me_component_test, nan_derivatives_stop_the_run_naming_the_variable) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  variable_refs k;
+  k.reals = {2};
+  value_block nan;
+  nan.reals = {std::nan("")};
+  c->set_values(k, nan);
+  initialise(*c, 1.0);
+  variable_refs x;
+  x.reals = {0};
+  try {
+    advance(*c, x, 0.0, 0.1, 1);
+    FAIL() << "NaN derivative accepted";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'decay' at t = 0 s"));
+    EXPECT_THAT(e.what(), HasSubstr("fmi2GetDerivatives gave der(x) = NaN"));
+  }
+}
+
+// Adams with fixed-point iteration on x' = -1e6 x must take steps of about 1e-6 s
+TEST_F(me_component_test, a_solver_that_cannot_progress_names_the_reason) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto o = cvode(1e-6);
+  o.method = model_exchange_options::method_kind::adams;
+  auto c = make(*f, "decay", o);
+  variable_refs k;
+  k.reals = {2};
+  value_block stiff;
+  stiff.reals = {1e6};
+  c->set_values(k, stiff);
+  initialise(*c, 10.0);
+  variable_refs x;
+  x.reals = {0};
+  try {
+    advance(*c, x, 0.0, 10.0, 1);
+    FAIL() << "Adams crossed a very stiff system";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'decay' at t = 0 s"));
+    EXPECT_THAT(e.what(), HasSubstr("too much work"));
+  }
+}
+
 // a saved state restored into a fresh instance continues exactly like the original
 TEST_F(me_component_test, a_restored_state_continues_byte_identically) {
   auto f = load("ball", STRIDE_ME_BALL);
