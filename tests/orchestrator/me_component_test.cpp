@@ -200,6 +200,72 @@ TEST_F(me_component_test, euler_without_a_step_is_refused) {
   EXPECT_THROW(make(*f, "decay", o), component_error);
 }
 
+// x = e^-t falls below 1/2 at ln 2: the FMU asks for a step event after the first internal
+// step that ends below, within the communication step that holds ln 2
+TEST_F(me_component_test, step_events_are_handled_after_the_integrator_step) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-8));
+  variable_refs threshold;
+  threshold.reals = {4};
+  value_block half;
+  half.reals = {0.5};
+  c->set_values(threshold, half);
+  initialise(*c, 1.0);
+  variable_refs outs;
+  outs.reals = {5};     // crossed_at
+  outs.integers = {0};  // crossed
+  const auto trace = advance(*c, outs, 0.0, 0.1, 10);
+  for (std::size_t i = 0; i < trace.t.size(); ++i) {
+    EXPECT_EQ(trace.outputs[i].integers[0], trace.t[i] >= std::log(2.0) ? 1 : 0) << trace.t[i];
+  }
+  const double at = trace.outputs.back().reals[0];
+  EXPECT_GE(at, std::log(2.0));
+  EXPECT_LE(at, 0.7);  // the communication step (0.6, 0.7] holds ln 2
+}
+
+// terminateSimulation at the third bounce ends the step that holds it, and every later one
+TEST_F(me_component_test, terminate_simulation_ends_the_run_at_the_event) {
+  auto f = load("ball", STRIDE_ME_BALL);
+  auto c = make(*f, "ball", cvode(1e-8));
+  variable_refs max;
+  max.integers = {1};
+  value_block three;
+  three.integers = {3};
+  c->set_values(max, three);
+  initialise(*c, 3.0);
+  variable_refs outs;
+  outs.integers = {0};
+  c->expose({}, outs);
+  const double t1 = std::sqrt(2.0 / 9.81);
+  const double third = t1 + 2 * 0.7 * t1 + 2 * 0.49 * t1;
+  const duration dt = duration_from_seconds(0.01);
+  time_point t = time_from_seconds(0);
+  value_block out;
+  while (c->step(t, dt, {}, out) == step_result::complete) t += dt;
+  EXPECT_LT(to_seconds(t), third);
+  EXPECT_GE(to_seconds(t + dt), third);
+  EXPECT_EQ(c->step(t + dt, dt, {}, out), step_result::terminate);
+}
+
+// without rtol the FMU's DefaultExperiment/@tolerance (1e-6) is used, with atol = rtol
+TEST_F(me_component_test, tolerances_default_to_the_default_experiment) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  variable_refs x;
+  x.reals = {0};
+  const auto run = [&](const model_exchange_options& o) {
+    auto c = make(*f, "decay", o);
+    initialise(*c, 1.0);
+    return advance(*c, x, 0.0, 1.0, 1).outputs.back().reals[0];
+  };
+  model_exchange_options explicit_default;
+  explicit_default.rtol = 1e-6;
+  explicit_default.atol = 1e-6;
+  model_exchange_options looser;
+  looser.rtol = 1e-4;
+  EXPECT_EQ(run({}), run(explicit_default));
+  EXPECT_NE(run({}), run(looser));
+}
+
 // k = NaN makes the FMU's derivative NaN: refused at once, naming the derivative
 TEST_F(me_component_test, nan_derivatives_stop_the_run_naming_the_variable) {
   auto f = load("decay", STRIDE_ME_DECAY);

@@ -27,5 +27,11 @@ int me_event(me_data* m) {
   m->r[2] = -m->r[5] * m->r[2];
   m->r[6] = m->time;
   m->i[0] += 1;
+  /* max_bounces > 0: the simulation ends at that bounce */
+  if (m->i[1] > 0 && m->i[0] >= m->i[1]) m->terminate = 1;
   return 1;
+}
+int me_step_event(me_data* m) {
+  (void)m;
+  return 0;
 }

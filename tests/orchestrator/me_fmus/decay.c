@@ -1,5 +1,6 @@
 /* x' = -k x + u, x(0) = 1: with u = 0 the closed form is exp(-k t); with a large k it is
- * stiff. The input u changes only at communication points. */
+ * stiff. The input u changes only at communication points. Value references: 0 x, 1 der(x),
+ * 2 k, 3 u, 4 threshold, 5 crossed_at; integer 0 crossed. */
 #include "me_model.h"
 
 const char* const me_guid = "{stride-me-decay}";
@@ -19,7 +20,15 @@ void me_indicators(const me_data* m, double z[]) {
   (void)m;
   (void)z;
 }
+/* With threshold > 0: a step event after the first integrator step that ends below it, which
+ * records its time and sets the integer `crossed`. */
+int me_step_event(me_data* m) {
+  return m->r[4] > 0 && m->i[0] == 0 && m->r[0] < m->r[4];
+}
 int me_event(me_data* m) {
-  (void)m;
+  if (me_step_event(m)) {
+    m->i[0] = 1;
+    m->r[5] = m->time;
+  }
   return 0;
 }

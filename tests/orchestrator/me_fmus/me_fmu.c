@@ -208,7 +208,7 @@ fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
 fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean no_set, fmi2Boolean* enter,
                                        fmi2Boolean* terminate) {
   (void)no_set;
-  *enter = fmi2False;
+  *enter = me_step_event(&((instance*)c)->m) ? fmi2True : fmi2False;
   *terminate = ((instance*)c)->m.terminate ? fmi2True : fmi2False;
   return fmi2OK;
 }

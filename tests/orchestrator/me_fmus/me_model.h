@@ -27,5 +27,7 @@ void me_equations(me_data* m); /* derivatives (and outputs) from the states */
 void me_indicators(const me_data* m, double z[]);
 /* One pass of event iteration at m->time; returns whether the continuous states changed. */
 int me_event(me_data* m);
+/* After an integrator step: whether the model asks for a step event. */
+int me_step_event(me_data* m);
 
 #endif /* STRIDE_TESTS_ME_MODEL_H */

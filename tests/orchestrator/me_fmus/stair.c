@@ -30,3 +30,7 @@ int me_event(me_data* m) {
   m->next_event = (m->i[0] + 1) * m->r[3];
   return 0;
 }
+int me_step_event(me_data* m) {
+  (void)m;
+  return 0;
+}
