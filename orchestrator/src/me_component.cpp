@@ -19,15 +19,15 @@ namespace stride::cosim {
 namespace {
 
 // The functions Model Exchange uses besides its own ten.
-#define STRIDE_ME_COMMON_FUNCTIONS(X)                                                          \
-  X(fmi2Instantiate)                                                                           \
-  X(fmi2FreeInstance)                                                                          \
-  X(fmi2SetupExperiment)                                                                       \
-  X(fmi2EnterInitializationMode) X(fmi2ExitInitializationMode) X(fmi2Terminate) X(fmi2GetReal) \
-      X(fmi2GetInteger) X(fmi2GetBoolean) X(fmi2GetString) X(fmi2SetReal) X(fmi2SetInteger)    \
-          X(fmi2SetBoolean) X(fmi2SetString) X(fmi2GetFMUstate) X(fmi2SetFMUstate)             \
-              X(fmi2FreeFMUstate) X(fmi2SerializedFMUstateSize) X(fmi2SerializeFMUstate)       \
-                  X(fmi2DeSerializeFMUstate)
+#define STRIDE_ME_COMMON_FUNCTIONS(X)                                                       \
+  X(fmi2Instantiate)                                                                        \
+  X(fmi2FreeInstance)                                                                       \
+  X(fmi2SetupExperiment)                                                                    \
+  X(fmi2EnterInitializationMode)                                                            \
+  X(fmi2ExitInitializationMode) X(fmi2Terminate) X(fmi2GetReal) X(fmi2GetInteger)           \
+      X(fmi2GetBoolean) X(fmi2GetString) X(fmi2SetReal) X(fmi2SetInteger) X(fmi2SetBoolean) \
+          X(fmi2SetString) X(fmi2GetFMUstate) X(fmi2SetFMUstate) X(fmi2FreeFMUstate)        \
+              X(fmi2SerializedFMUstateSize) X(fmi2SerializeFMUstate) X(fmi2DeSerializeFMUstate)
 
 struct me_functions {
 #define STRIDE_DECLARE_POINTER(name) name##TYPE* name = nullptr;
@@ -156,6 +156,7 @@ class me_component final : public component, private detail::ode_system {
   [[noreturn]] void fail_at(double t, const std::string& reason);
   void require_state_support() const;
   void check(const char* function, fmi2Status s);
+  void check_at(double t, const char* function, fmi2Status s);
   static void logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
                      fmi2String category, fmi2String message, ...);
 
@@ -312,9 +313,10 @@ step_result me_component::step(time_point t, duration dt, const value_block& inp
 }
 
 void me_component::derivatives(double t, std::span<const double> x, std::span<double> dx) {
-  check("fmi2SetTime", fn_.fmi2SetTime(instance_, t));
-  check("fmi2SetContinuousStates", fn_.fmi2SetContinuousStates(instance_, x.data(), x.size()));
-  check("fmi2GetDerivatives", fn_.fmi2GetDerivatives(instance_, dx.data(), dx.size()));
+  check_at(t, "fmi2SetTime", fn_.fmi2SetTime(instance_, t));
+  check_at(t, "fmi2SetContinuousStates",
+           fn_.fmi2SetContinuousStates(instance_, x.data(), x.size()));
+  check_at(t, "fmi2GetDerivatives", fn_.fmi2GetDerivatives(instance_, dx.data(), dx.size()));
   for (std::size_t i = 0; i < dx.size(); ++i) {
     if (std::isnan(dx[i])) {
       fail_at(t, "fmi2GetDerivatives gave " + md_.variables[md_.derivatives[i]].name +
@@ -324,16 +326,25 @@ void me_component::derivatives(double t, std::span<const double> x, std::span<do
 }
 
 void me_component::indicators(double t, std::span<const double> x, std::span<double> z) {
-  check("fmi2SetTime", fn_.fmi2SetTime(instance_, t));
+  check_at(t, "fmi2SetTime", fn_.fmi2SetTime(instance_, t));
   if (!x.empty()) {
-    check("fmi2SetContinuousStates", fn_.fmi2SetContinuousStates(instance_, x.data(), x.size()));
+    check_at(t, "fmi2SetContinuousStates",
+             fn_.fmi2SetContinuousStates(instance_, x.data(), x.size()));
   }
-  check("fmi2GetEventIndicators", fn_.fmi2GetEventIndicators(instance_, z.data(), z.size()));
+  check_at(t, "fmi2GetEventIndicators", fn_.fmi2GetEventIndicators(instance_, z.data(), z.size()));
 }
 
 void me_component::fail_at(double t, const std::string& reason) {
   failed_ = true;
   throw component_error("component '" + name_ + "' at t = " + seconds(t) + ": " + reason);
+}
+
+// inside the integration: the time of the failing call is named
+void me_component::check_at(double t, const char* function, fmi2Status s) {
+  if (s == fmi2OK || s == fmi2Warning) return;
+  if (s == fmi2Fatal) fatal_ = true;
+  fail_at(t, std::string(function) + " returned " +
+                 std::string(fmi2::to_string(static_cast<fmi2::status>(s))));
 }
 
 void me_component::check(const char* function, fmi2Status s) {

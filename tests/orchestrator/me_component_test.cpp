@@ -287,6 +287,28 @@ TEST_F(me_component_test, nan_derivatives_stop_the_run_naming_the_variable) {
   }
 }
 
+// fmi2Discard from the equations after t = 0.25 s: the run stops there, naming call and time
+TEST_F(me_component_test, an_fmu_refusing_its_equations_stops_the_run_naming_the_time) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  variable_refs fail_after;
+  fail_after.reals = {15};
+  value_block quarter;
+  quarter.reals = {0.25};
+  c->set_values(fail_after, quarter);
+  initialise(*c, 1.0);
+  variable_refs x;
+  x.reals = {0};
+  advance(*c, x, 0.0, 0.1, 2);  // before 0.25 s all is well
+  try {
+    advance(*c, x, 0.2, 0.1, 1);
+    FAIL() << "fmi2Discard ignored";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), ::testing::MatchesRegex("component 'decay' at t = 0\\.2[5-9][0-9]* s: "
+                                                  "fmi2GetDerivatives returned fmi2Discard"));
+  }
+}
+
 // Adams with fixed-point iteration on x' = -1e6 x must take steps of about 1e-6 s
 TEST_F(me_component_test, a_solver_that_cannot_progress_names_the_reason) {
   auto f = load("decay", STRIDE_ME_DECAY);

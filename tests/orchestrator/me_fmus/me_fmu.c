@@ -231,6 +231,8 @@ fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t n) {
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real dx[], size_t n) {
   instance* s = c;
   if ((int)n != me_state_count) return fmi2Error;
+  /* the last real, when positive, is a time after which the equations refuse (fmi2Discard) */
+  if (s->m.r[ME_MAX_REALS - 1] > 0 && s->m.time > s->m.r[ME_MAX_REALS - 1]) return fmi2Discard;
   me_equations(&s->m);
   for (size_t k = 0; k < n; ++k) dx[k] = s->m.r[me_derivatives[k]];
   return fmi2OK;

@@ -28,7 +28,7 @@ struct instance_options {
   bool logging_on = false;  ///< the loggingOn argument of fmi2Instantiate (debug logging)
   /// Set: run the FMU's Model Exchange interface with this integrator. An FMU without
   /// <CoSimulation> always runs as Model Exchange (with defaults when this is empty).
-  std::optional<model_exchange_options> model_exchange;
+  std::optional<model_exchange_options> model_exchange = std::nullopt;
 };
 
 /// An imported FMU: its extracted files, its model description and its loaded binary. The

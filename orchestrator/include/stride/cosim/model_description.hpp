@@ -50,7 +50,7 @@ struct variable_description {
   std::string description;
   int line = 0;  ///< line in modelDescription.xml (0 when built in code)
   /// Real/@derivative: index into `variables` of the state this variable is the derivative of.
-  std::optional<std::size_t> derivative_of;
+  std::optional<std::size_t> derivative_of = std::nullopt;
 };
 
 /// An output and the variables it depends on (ModelStructure/Outputs).
@@ -110,11 +110,12 @@ struct model_description {
   stride::cosim::default_experiment default_experiment;
   std::vector<variable_description> variables;
   std::vector<output_dependency> outputs;
-  std::optional<model_exchange_capabilities> model_exchange;  ///< nullopt without <ModelExchange>
+  std::optional<model_exchange_capabilities> model_exchange =
+      std::nullopt;  ///< nullopt without <ModelExchange>
   std::size_t number_of_event_indicators = 0;
   /// ModelStructure/Derivatives: indices into `variables` of the state derivatives, in the
   /// order of the continuous-state vector.
-  std::vector<std::size_t> derivatives;
+  std::vector<std::size_t> derivatives{};
 
   /// The variable called `name`, or nullptr.
   const variable_description* find(std::string_view name) const noexcept;

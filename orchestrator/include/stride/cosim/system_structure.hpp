@@ -50,9 +50,9 @@ struct component_spec {
   std::vector<parameter_setting> parameters;
   source_location where;
   /// "co-simulation", "model-exchange", or "" (Co-Simulation when the FMU offers it).
-  std::string kind;
+  std::string kind{};
   /// The integrator of a Model Exchange component (solver, method, rtol, atol, max_step).
-  std::optional<model_exchange_options> model_exchange;
+  std::optional<model_exchange_options> model_exchange = std::nullopt;
 };
 
 /// Where the component part of a "comp.var" name ends: at the dot after the longest prefix that
