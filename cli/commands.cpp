@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "stop_signals.hpp"
+#include "stride/common/text.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/fmu.hpp"
@@ -71,6 +72,22 @@ const char* yes_no(bool b) {
 }
 
 // where each component of `system` (replicas expanded) runs, one line per component
+// "model-exchange cvode bdf rtol=1e-08": how a component with kind or solver settings runs
+std::string kind_column(const component_spec& c) {
+  if (c.kind.empty() && !c.model_exchange) return "";
+  std::string text = c.kind.empty() ? "model-exchange if the FMU is ME-only" : c.kind;
+  if (!c.model_exchange) return text;
+  using me = model_exchange_options;
+  const auto& o = *c.model_exchange;
+  text += o.solver == me::solver_kind::euler   ? " euler"
+          : o.method == me::method_kind::adams ? " cvode adams"
+                                               : " cvode bdf";
+  const auto number = [](const char* name, const std::optional<double>& v) {
+    return v ? std::string(" ") + name + "=" + text::format_double(*v) : std::string();
+  };
+  return text + number("rtol", o.rtol) + number("atol", o.atol) + number("max_step", o.max_step);
+}
+
 std::string placement_table(const system_structure& system) {
   const system_structure expanded = expand_replicas(system);
   std::size_t width = 9;
@@ -79,9 +96,11 @@ std::string placement_table(const system_structure& system) {
   char line[512];
   for (const auto& c : expanded.components) {
     const std::string where = c.worker.empty() ? "this process" : "worker " + c.worker;
-    std::snprintf(line, sizeof line, "  %-*s  %-24s  %s\n", static_cast<int>(width), c.name.c_str(),
+    std::snprintf(line, sizeof line, "  %-*s  %-24s  %s", static_cast<int>(width), c.name.c_str(),
                   where.c_str(), c.fmu.c_str());
     table += line;
+    const std::string kind = kind_column(c);
+    table += (kind.empty() ? "" : "  (" + kind + ")") + "\n";
   }
   return table;
 }
@@ -305,6 +324,18 @@ int inspect(const fs::path& file) {
     row("canGetAndSetFMUstate", yes_no(cs.can_get_and_set_fmu_state));
     row("canSerializeFMUstate", yes_no(cs.can_serialize_fmu_state));
     row("providesDirectionalDerivative", yes_no(cs.provides_directional_derivative));
+  }
+  if (md.model_exchange) {
+    const auto& me = *md.model_exchange;
+    out << "\nModel Exchange Capabilities\n\n";
+    key_width = 40;
+    row("modelIdentifier", me.model_identifier);
+    row("continuous states", std::to_string(md.derivatives.size()));
+    row("numberOfEventIndicators", std::to_string(md.number_of_event_indicators));
+    row("completedIntegratorStepNotNeeded", yes_no(me.completed_integrator_step_not_needed));
+    row("canGetAndSetFMUstate", yes_no(me.can_get_and_set_fmu_state));
+    row("canSerializeFMUstate", yes_no(me.can_serialize_fmu_state));
+    row("providesDirectionalDerivative", yes_no(me.provides_directional_derivative));
   }
   const auto& de = md.default_experiment;
   auto opt = [](const std::optional<double>& d) {

@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config make
   libode-dev liburdfdom-dev libassimp-dev libeigen3-dev libceres-dev
-  libtinyxml2-dev libzip-dev zipcmp zipmerge ziptool zip unzip
+  libtinyxml2-dev libzip-dev libsundials-dev zipcmp zipmerge ziptool zip unzip
   libcli11-dev cyclonedds-dev cyclonedds-tools libssl-dev iproute2 tcpdump
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3

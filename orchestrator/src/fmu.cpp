@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fmi3_fmu.hpp"
+#include "me_component.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/fmi2/fmi2_api.h"
@@ -378,10 +379,13 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
       message = where + "!modelDescription.xml" + message.substr(tmp.size());
     throw fmu_import_error(message);
   }
-  if (!p->md.co_simulation) {
-    throw fmu_import_error(where + ": not a Co-Simulation FMU (no <CoSimulation> element)");
+  if (!p->md.co_simulation && !p->md.model_exchange) {
+    throw fmu_import_error(where + ": neither <CoSimulation> nor <ModelExchange> is declared");
   }
-  const std::string& id = p->md.co_simulation->model_identifier;
+  // a Model Exchange-only FMU: its runner resolves the functions (me_component.cpp)
+  const bool cs = p->md.co_simulation.has_value();
+  const std::string& id =
+      cs ? p->md.co_simulation->model_identifier : p->md.model_exchange->model_identifier;
   // it names the binary: a path here would load a library from outside the archive
   const bool identifier = !id.empty() && !std::isdigit(static_cast<unsigned char>(id[0])) &&
                           std::all_of(id.begin(), id.end(), [](char c) {
@@ -411,7 +415,11 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
   if (p->fn.name == nullptr) {                                                                 \
     throw fmu_import_error(where + ": binaries/linux64/" + id + ".so does not export " #name); \
   }
-  STRIDE_FMI2_CS_FUNCTIONS(STRIDE_RESOLVE)
+  if (cs) {
+    STRIDE_FMI2_CS_FUNCTIONS(STRIDE_RESOLVE)
+  } else {
+    STRIDE_RESOLVE(fmi2GetVersion)
+  }
 #undef STRIDE_RESOLVE
   const std::string version = p->fn.fmi2GetVersion() ? p->fn.fmi2GetVersion() : "";
   if (version != "2.0") {
@@ -420,8 +428,15 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
   return std::shared_ptr<fmu>(new fmu(std::move(p)));
 }
 
+void* fmu::symbol(const char* name) const noexcept {
+  return ::dlsym(pimpl_->library, name);
+}
+
 std::unique_ptr<component> fmu::instantiate(const std::string& instance_name,
                                             const instance_options& options) {
+  if (options.model_exchange || !pimpl_->md.co_simulation) {
+    return instantiate_model_exchange(shared_from_this(), instance_name, options);
+  }
   const auto& cs = *pimpl_->md.co_simulation;
   if (cs.can_be_instantiated_only_once_per_process && pimpl_->instances > 0) {
     throw component_error("component '" + instance_name + "': " + pimpl_->file.string() +

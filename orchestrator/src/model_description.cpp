@@ -81,6 +81,18 @@ struct md_reader : detail::md_reader_base {
     md.generation_date_and_time = attribute_or(root, "generationDateAndTime");
 
     md.has_model_exchange = root->FirstChildElement("ModelExchange") != nullptr;
+    if (const auto* me = root->FirstChildElement("ModelExchange")) {
+      md.model_exchange = read_model_exchange(me);
+    }
+    if (root->Attribute("numberOfEventIndicators") != nullptr) {
+      const auto n = text::parse_integer(attribute_or(root, "numberOfEventIndicators"));
+      if (!n || *n < 0) {
+        fail(root->GetLineNum(), "numberOfEventIndicators=\"" +
+                                     attribute_or(root, "numberOfEventIndicators") +
+                                     "\" is not a non-negative integer");
+      }
+      md.number_of_event_indicators = static_cast<std::size_t>(*n);
+    }
     if (const auto* cs = root->FirstChildElement("CoSimulation")) {
       cosim_capabilities cap;
       cap.model_identifier = attribute_or(cs, "modelIdentifier");
@@ -139,8 +151,48 @@ struct md_reader : detail::md_reader_base {
           md.outputs.push_back(read_unknown(u, md.variables.size()));
         }
       }
+      if (const auto* ders = ms->FirstChildElement("Derivatives")) read_derivatives(ders, md);
     }
     return md;
+  }
+
+  model_exchange_capabilities read_model_exchange(const tinyxml2::XMLElement* me) const {
+    model_exchange_capabilities cap;
+    cap.model_identifier = attribute_or(me, "modelIdentifier");
+    if (cap.model_identifier.empty())
+      fail(me->GetLineNum(), "<ModelExchange> has no modelIdentifier");
+    cap.needs_execution_tool = parse_bool(me, "needsExecutionTool", false);
+    cap.completed_integrator_step_not_needed =
+        parse_bool(me, "completedIntegratorStepNotNeeded", false);
+    cap.can_be_instantiated_only_once_per_process =
+        parse_bool(me, "canBeInstantiatedOnlyOncePerProcess", false);
+    cap.can_not_use_memory_management_functions =
+        parse_bool(me, "canNotUseMemoryManagementFunctions", false);
+    cap.can_get_and_set_fmu_state = parse_bool(me, "canGetAndSetFMUstate", false);
+    cap.can_serialize_fmu_state = parse_bool(me, "canSerializeFMUstate", false);
+    cap.provides_directional_derivative = parse_bool(me, "providesDirectionalDerivative", false);
+    return cap;
+  }
+
+  // Each listed derivative must be a Real whose derivative attribute names a Real state.
+  void read_derivatives(const tinyxml2::XMLElement* ders, model_description& md) const {
+    for (auto* u = ders->FirstChildElement("Unknown"); u != nullptr;
+         u = u->NextSiblingElement("Unknown")) {
+      const std::size_t d = read_unknown(u, md.variables.size()).output;
+      const auto& v = md.variables[d];
+      if (v.type != variable_type::real || !v.derivative_of) {
+        fail(u->GetLineNum(), "Derivatives lists \"" + v.name +
+                                  "\", which is not a Real with a derivative attribute");
+      }
+      md.derivatives.push_back(d);
+    }
+    for (const auto& v : md.variables) {
+      if (v.derivative_of && *v.derivative_of >= md.variables.size()) {
+        fail(v.line, "variable \"" + v.name + "\": derivative=\"" +
+                         std::to_string(*v.derivative_of + 1) +
+                         "\" is not a variable position 1.." + std::to_string(md.variables.size()));
+      }
+    }
   }
 
   std::size_t parse_index(const std::string& token, int line, std::size_t count) const {
@@ -203,6 +255,13 @@ struct md_reader : detail::md_reader_base {
     v.max = attribute(type_element, "max");
     v.declared_type = attribute_or(type_element, "declaredType");
     v.unit = attribute_or(type_element, "unit");
+    if (const auto d = attribute(type_element, "derivative")) {
+      const auto n = text::parse_integer(*d);
+      if (!n || *n < 1)
+        fail(v.line,
+             "variable \"" + v.name + "\": derivative=\"" + *d + "\" is not a variable position");
+      v.derivative_of = static_cast<std::size_t>(*n - 1);
+    }
     if (v.unit.empty() && !v.declared_type.empty()) {
       if (auto it = type_units.find(v.declared_type); it != type_units.end()) v.unit = it->second;
     }

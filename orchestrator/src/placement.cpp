@@ -38,6 +38,28 @@ std::shared_ptr<fmu> shared_import(const fs::path& file, const fmu_import_option
 
 }  // namespace
 
+std::optional<model_exchange_options> model_exchange_choice(const component_spec& spec,
+                                                            const fmu& f) {
+  const auto& md = f.model_description();
+  if (spec.kind == "co-simulation" && !md.co_simulation) {
+    throw fmu_import_error("kind=\"co-simulation\", but " + f.file().string() +
+                           " offers only Model Exchange");
+  }
+  if (spec.kind.empty() && spec.model_exchange && md.co_simulation) {
+    throw fmu_import_error(f.file().string() +
+                           " offers Co-Simulation, which is used unless kind=\"model-exchange\"; "
+                           "solver settings need that kind");
+  }
+  if (spec.kind == "model-exchange" && !md.model_exchange) {
+    throw fmu_import_error("kind=\"model-exchange\", but " + f.file().string() +
+                           " has no <ModelExchange> interface");
+  }
+  if (spec.kind == "model-exchange" || !md.co_simulation) {
+    return spec.model_exchange.value_or(model_exchange_options{});
+  }
+  return std::nullopt;
+}
+
 std::unique_ptr<component> in_process_placement::create(const component_spec& spec,
                                                         const placement_context& context) {
   if (!spec.worker.empty()) return nullptr;
@@ -49,6 +71,7 @@ std::unique_ptr<component> in_process_placement::create(const component_spec& sp
     instance_options io;
     io.log = context.log;
     io.logging_on = context.fmu_debug_logging;
+    io.model_exchange = model_exchange_choice(spec, *f);
     auto c = f->instantiate(spec.name, io);
     files_[spec.name] = fs::absolute(file);
     return c;

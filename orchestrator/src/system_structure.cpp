@@ -331,6 +331,53 @@ class system_reader {
     return c;
   }
 
+  // kind="model-exchange" and its integrator (docs/model-exchange.md)
+  void read_kind(const tinyxml2::XMLElement* e, component_spec& c) const {
+    const int line = e->GetLineNum();
+    if (e->Attribute("kind")) {
+      c.kind = required(e, "kind");
+      if (c.kind != "co-simulation" && c.kind != "model-exchange") {
+        fail(line, "kind=\"" + c.kind + "\" is not co-simulation or model-exchange");
+      }
+    }
+    const bool settings = e->Attribute("solver") || e->Attribute("method") ||
+                          e->Attribute("rtol") || e->Attribute("atol") || e->Attribute("max_step");
+    if (!settings) return;
+    if (c.kind == "co-simulation") {
+      fail(line,
+           "solver, method, rtol, atol and max_step apply to kind=\"model-exchange\" only "
+           "(a Co-Simulation FMU integrates itself)");
+    }
+    model_exchange_options o;
+    using me = model_exchange_options;
+    const std::string solver = e->Attribute("solver") ? required(e, "solver") : "cvode";
+    if (solver == "euler") {
+      o.solver = me::solver_kind::euler;
+    } else if (solver != "cvode") {
+      fail(line, "solver=\"" + solver + "\" is not cvode or euler");
+    }
+    if (e->Attribute("method")) {
+      const std::string method = required(e, "method");
+      if (method != "bdf" && method != "adams") {
+        fail(line, "method=\"" + method + "\" is not bdf or adams");
+      }
+      if (o.solver == me::solver_kind::euler) fail(line, "method applies to solver=\"cvode\" only");
+      o.method = method == "adams" ? me::method_kind::adams : me::method_kind::bdf;
+    }
+    for (const char* name : {"rtol", "atol", "max_step"}) {
+      if (!e->Attribute(name)) continue;
+      const double v = finite(e, name, 0.0);
+      if (v <= 0) fail(line, std::string(name) + "=\"" + e->Attribute(name) + "\" must be > 0");
+      (std::string_view(name) == "rtol"   ? o.rtol
+       : std::string_view(name) == "atol" ? o.atol
+                                          : o.max_step) = v;
+    }
+    if (o.solver == me::solver_kind::euler && !o.max_step) {
+      fail(line, "solver=\"euler\" needs max_step (its fixed step in seconds)");
+    }
+    c.model_exchange = o;
+  }
+
   double finite(const tinyxml2::XMLElement* e, const char* name, double fallback) const {
     const char* v = e->Attribute(name);
     if (v == nullptr) return fallback;
@@ -384,7 +431,8 @@ class system_reader {
   // a replica group's members take no dots: "gait.x" inside a group means member gait
   void read_component(const tinyxml2::XMLElement* e, std::vector<component_spec>& components,
                       bool member = false) const {
-    check_attributes(e, {"name", "fmu", "step_multiple", "worker"});
+    check_attributes(e, {"name", "fmu", "step_multiple", "worker", "kind", "solver", "method",
+                         "rtol", "atol", "max_step"});
     component_spec c;
     c.name = required(e, "name");
     const bool bad_dots = member ? c.name.find('.') != std::string::npos
@@ -404,6 +452,7 @@ class system_reader {
     c.fmu = required(e, "fmu");
     if (e->Attribute("step_multiple")) c.step_multiple = positive_integer(e, "step_multiple");
     if (e->Attribute("worker")) c.worker = required(e, "worker");
+    read_kind(e, c);
     c.where = at(e);
     for (auto* p = e->FirstChildElement(); p != nullptr; p = p->NextSiblingElement()) {
       if (std::string_view(p->Name()) != "parameter") {
@@ -482,6 +531,24 @@ system_structure parse_system_file(const fs::path& file) {
   return parse_system_text(text.str(), file);
 }
 
+namespace {
+
+void write_kind(tinyxml2::XMLElement* e, const component_spec& c) {
+  if (!c.kind.empty()) e->SetAttribute("kind", c.kind.c_str());
+  if (!c.model_exchange) return;
+  const auto& o = *c.model_exchange;
+  using me = model_exchange_options;
+  e->SetAttribute("solver", o.solver == me::solver_kind::euler ? "euler" : "cvode");
+  if (o.solver == me::solver_kind::cvode) {
+    e->SetAttribute("method", o.method == me::method_kind::adams ? "adams" : "bdf");
+  }
+  if (o.rtol) e->SetAttribute("rtol", text::format_double(*o.rtol).c_str());
+  if (o.atol) e->SetAttribute("atol", text::format_double(*o.atol).c_str());
+  if (o.max_step) e->SetAttribute("max_step", text::format_double(*o.max_step).c_str());
+}
+
+}  // namespace
+
 std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
   tinyxml2::XMLDocument doc;
   doc.InsertEndChild(doc.NewDeclaration());
@@ -514,6 +581,7 @@ std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
     e->SetAttribute("fmu", fmu_ref.c_str());
     if (c.step_multiple != 1) e->SetAttribute("step_multiple", c.step_multiple);
     if (!c.worker.empty()) e->SetAttribute("worker", c.worker.c_str());
+    write_kind(e, c);
     for (const auto& p : c.parameters) {
       auto* pe = e->InsertNewChildElement("parameter");
       pe->SetAttribute("name", p.variable.c_str());

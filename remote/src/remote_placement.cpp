@@ -50,6 +50,13 @@ std::unique_ptr<cosim::component> remote_placement::create(
   if (spec.worker.empty()) return nullptr;
   const std::string where = (spec.where.str().empty() ? std::string() : spec.where.str() + ": ") +
                             "component '" + spec.name + "' on worker '" + spec.worker + "': ";
+  // a worker runs a Model Exchange-only FMU with the default integrator; the settings do not
+  // travel yet, and silently running Co-Simulation instead would be wrong
+  if (spec.kind == "model-exchange" || spec.model_exchange) {
+    throw cosim::fmu_import_error(where +
+                                  "kind and solver settings are not supported on workers yet; "
+                                  "run the component in this process");
+  }
   const fs::path file = cosim::resolve_fmu(spec, *context.system, context.fmu_search_path);
   std::vector<std::byte> archive;
   cosim::model_description description;

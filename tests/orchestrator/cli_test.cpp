@@ -109,6 +109,38 @@ TEST_F(cosim_cli, inspect_lists_variables_without_loading_the_binary) {
   EXPECT_THAT(v.err, HasSubstr("missing binary binaries/linux64/demo.so"));
 }
 
+TEST_F(cosim_cli, inspect_shows_model_exchange_capabilities_and_settings) {
+  const fs::path fmu = scratch.path() / "me.fmu";
+  test::write_zip(fmu, {{"modelDescription.xml", R"xml(<?xml version="1.0"?>
+<fmiModelDescription fmiVersion="2.0" modelName="me" guid="{7}" numberOfEventIndicators="3">
+  <ModelExchange modelIdentifier="me" completedIntegratorStepNotNeeded="true"/>
+  <ModelVariables>
+    <ScalarVariable name="x" valueReference="0"><Real/></ScalarVariable>
+    <ScalarVariable name="der(x)" valueReference="1"><Real derivative="1"/></ScalarVariable>
+  </ModelVariables>
+  <ModelStructure><Derivatives><Unknown index="2"/></Derivatives></ModelStructure>
+</fmiModelDescription>)xml"}});
+  auto r = stride("inspect " + quoted(fmu));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("Model Exchange Capabilities"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("continuous states +1\n"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("numberOfEventIndicators +3\n"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("completedIntegratorStepNotNeeded +true"));
+
+  const fs::path system = scratch.path() / "me.xml";
+  std::ofstream(system) << "<system><simulation stop='1' step='0.1'/>\n"
+                           "<component name='a' fmu='me.fmu' kind='model-exchange' "
+                           "method='adams' rtol='1e-8'/>\n"
+                           "<component name='b' fmu='me.fmu' solver='euler' max_step='0.01'/>\n"
+                           "<component name='c' fmu='me.fmu'/></system>\n";
+  r = stride("inspect " + quoted(system));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("me.fmu  (model-exchange cvode adams rtol=1e-08)"));
+  EXPECT_THAT(r.out,
+              HasSubstr("me.fmu  (model-exchange if the FMU is ME-only euler max_step=0.01)"));
+  EXPECT_THAT(r.out, ::testing::ContainsRegex("c +this process +me.fmu\n"));
+}
+
 // `stride plot` on a run folder of any system (a results CSV written here, no FMU needed)
 TEST_F(cosim_cli, plot_draws_any_run_and_refuses_what_it_cannot_draw) {
   const fs::path run = scratch.path() / "run";

@@ -264,8 +264,12 @@ TEST_F(cosim_import, model_description_problems_are_named) {
   EXPECT_THAT(with("v1", replaced("fmiVersion=\"2.0\"", "fmiVersion=\"1.0\"")),
               HasSubstr("v1.fmu!modelDescription.xml:2: fmiVersion is \"1.0\""));
   EXPECT_THAT(with("noguid", replaced("guid=\"{1234}\"", "")), HasSubstr("missing or empty guid"));
+  // a Model Exchange-only FMU is imported (docs/model-exchange.md): it fails later, here at
+  // its missing binary; one with neither interface is refused
   EXPECT_THAT(with("me", replaced("<CoSimulation", "<ModelExchange")),
-              HasSubstr("not a Co-Simulation FMU"));
+              HasSubstr("missing binary binaries/linux64/demo.so"));
+  EXPECT_THAT(with("neither", replaced("<CoSimulation", "<Other")),
+              HasSubstr("neither <CoSimulation> nor <ModelExchange> is declared"));
   EXPECT_THAT(with("badindex", replaced("index=\"3\"", "index=\"9\"")),
               HasSubstr("ModelStructure index \"9\" is not a variable position 1..6"));
   EXPECT_THAT(with("dup", replaced("name=\"n\"", "name=\"u\"")),
@@ -281,6 +285,52 @@ TEST_F(cosim_import, model_description_problems_are_named) {
   EXPECT_THAT(load_error(empty, options()),
               HasSubstr("no modelDescription.xml at the archive root"));
   EXPECT_TRUE(extract_root_is_empty());
+}
+
+// ModelExchange, numberOfEventIndicators, derivative attributes and ModelStructure/Derivatives
+TEST(cosim_model_description, reads_the_model_exchange_declarations) {
+  const std::string head =
+      "<fmiModelDescription fmiVersion=\"2.0\" guid=\"{me}\" numberOfEventIndicators=\"2\">\n"
+      "<ModelExchange modelIdentifier=\"m\" completedIntegratorStepNotNeeded=\"true\" "
+      "canGetAndSetFMUstate=\"true\"/>\n<ModelVariables>\n"
+      "<ScalarVariable name=\"v\" valueReference=\"0\"><Real/></ScalarVariable>\n"
+      "<ScalarVariable name=\"x\" valueReference=\"1\"><Real/></ScalarVariable>\n";
+  const auto md = parse_model_description_text(
+      head +
+          "<ScalarVariable name=\"der(x)\" valueReference=\"2\"><Real derivative=\"2\"/>"
+          "</ScalarVariable>\n</ModelVariables>\n"
+          "<ModelStructure><Derivatives><Unknown index=\"3\"/></Derivatives></ModelStructure>\n"
+          "</fmiModelDescription>",
+      "me");
+  EXPECT_FALSE(md.co_simulation);
+  ASSERT_TRUE(md.model_exchange);
+  EXPECT_EQ(md.model_exchange->model_identifier, "m");
+  EXPECT_TRUE(md.model_exchange->completed_integrator_step_not_needed);
+  EXPECT_TRUE(md.model_exchange->can_get_and_set_fmu_state);
+  EXPECT_FALSE(md.model_exchange->can_serialize_fmu_state);
+  EXPECT_EQ(md.number_of_event_indicators, 2u);
+  EXPECT_EQ(md.derivatives, std::vector<std::size_t>{2});
+  EXPECT_EQ(md.variables[2].derivative_of, std::optional<std::size_t>(1));
+  EXPECT_FALSE(md.variables[1].derivative_of);
+
+  const auto error_of = [&](const std::string& rest) {
+    try {
+      parse_model_description_text(head + rest, "me.xml");
+    } catch (const fmu_import_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string end = "</ModelVariables>\n<ModelStructure><Derivatives><Unknown index=\"";
+  EXPECT_EQ(error_of(end + "2\"/></Derivatives></ModelStructure></fmiModelDescription>"),
+            "me.xml:7: Derivatives lists \"x\", which is not a Real with a derivative attribute");
+  EXPECT_EQ(error_of("<ScalarVariable name=\"d\" valueReference=\"2\"><Real derivative=\"9\"/>"
+                     "</ScalarVariable>\n" +
+                     end + "3\"/></Derivatives></ModelStructure></fmiModelDescription>"),
+            "me.xml:6: variable \"d\": derivative=\"9\" is not a variable position 1..3");
+  EXPECT_EQ(error_of("<ScalarVariable name=\"d\" valueReference=\"2\"><Real derivative=\"0\"/>"
+                     "</ScalarVariable>\n</ModelVariables></fmiModelDescription>"),
+            "me.xml:6: variable \"d\": derivative=\"0\" is not a variable position");
 }
 
 TEST(cosim_model_description, reads_variables_structure_and_capabilities) {

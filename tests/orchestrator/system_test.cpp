@@ -122,6 +122,63 @@ TEST(cosim_system_xml, malformed_xml_names_file_and_line) {
   }
 }
 
+TEST(cosim_system_xml, reads_and_writes_the_model_exchange_settings) {
+  const auto s = parse(
+      "<system>\n<component name='a' fmu='m' kind='model-exchange' solver='cvode' "
+      "method='adams' rtol='1e-8' atol='1e-10' max_step='0.5'/>\n"
+      "<component name='b' fmu='m' solver='euler' max_step='0.001'/>\n"
+      "<component name='c' fmu='m' kind='co-simulation'/>\n<component name='d' fmu='m'/>\n"
+      "</system>");
+  using me = model_exchange_options;
+  ASSERT_EQ(s.components.size(), 4u);
+  for (const auto& back : {s, parse_system_text(to_xml(s, false), "t/copy.xml")}) {
+    const auto& a = back.components[0];
+    EXPECT_EQ(a.kind, "model-exchange");
+    ASSERT_TRUE(a.model_exchange);
+    EXPECT_EQ(a.model_exchange->solver, me::solver_kind::cvode);
+    EXPECT_EQ(a.model_exchange->method, me::method_kind::adams);
+    EXPECT_EQ(a.model_exchange->rtol, 1e-8);
+    EXPECT_EQ(a.model_exchange->atol, 1e-10);
+    EXPECT_EQ(a.model_exchange->max_step, 0.5);
+    const auto& b = back.components[1];
+    EXPECT_EQ(b.kind, "");  // decided by the FMU: an ME-only FMU needs no kind
+    ASSERT_TRUE(b.model_exchange);
+    EXPECT_EQ(b.model_exchange->solver, me::solver_kind::euler);
+    EXPECT_EQ(b.model_exchange->max_step, 0.001);
+    EXPECT_FALSE(b.model_exchange->rtol);
+    EXPECT_EQ(back.components[2].kind, "co-simulation");
+    EXPECT_FALSE(back.components[2].model_exchange);
+    EXPECT_FALSE(back.components[3].model_exchange);
+  }
+}
+
+TEST(cosim_system_xml, invalid_model_exchange_settings_name_the_line) {
+  auto error_of = [](const std::string& attributes) {
+    try {
+      parse_system_text("<system>\n<component name='a' fmu='m' " + attributes + "/>\n</system>",
+                        "t/test.xml");
+    } catch (const validation_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of("kind='co-simulation' solver='cvode'"),
+            "t/test.xml:2: solver, method, rtol, atol and max_step apply to "
+            "kind=\"model-exchange\" only (a Co-Simulation FMU integrates itself)");
+  EXPECT_EQ(error_of("solver='euler'"),
+            "t/test.xml:2: solver=\"euler\" needs max_step (its fixed step in seconds)");
+  EXPECT_EQ(error_of("rtol='0'"), "t/test.xml:2: rtol=\"0\" must be > 0");
+  EXPECT_EQ(error_of("atol='-1e-6'"), "t/test.xml:2: atol=\"-1e-6\" must be > 0");
+  EXPECT_EQ(error_of("rtol='nan'"), "t/test.xml:2: rtol=\"nan\" is not a finite number");
+  EXPECT_EQ(error_of("kind='me'"),
+            "t/test.xml:2: kind=\"me\" is not co-simulation or model-exchange");
+  EXPECT_EQ(error_of("solver='rk4'"), "t/test.xml:2: solver=\"rk4\" is not cvode or euler");
+  EXPECT_EQ(error_of("method='gear'"), "t/test.xml:2: method=\"gear\" is not bdf or adams");
+  EXPECT_EQ(error_of("solver='euler' max_step='0.1' method='bdf'"),
+            "t/test.xml:2: method applies to solver=\"cvode\" only");
+  EXPECT_EQ(error_of("kind='model-exchange' solver='euler' max_step='0.1'"), "no error");
+}
+
 TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   auto error_of = [](const std::string& xml) {
     try {

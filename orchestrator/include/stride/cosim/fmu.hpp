@@ -4,12 +4,14 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/component.hpp"
 #include "stride/cosim/log.hpp"
 #include "stride/cosim/model_description.hpp"
+#include "stride/cosim/model_exchange.hpp"
 
 namespace stride::cosim {
 
@@ -24,6 +26,9 @@ struct fmu_import_options {
 struct instance_options {
   log_sink log;             ///< FMU log messages; empty = stderr_log_sink()
   bool logging_on = false;  ///< the loggingOn argument of fmi2Instantiate (debug logging)
+  /// Set: run the FMU's Model Exchange interface with this integrator. An FMU without
+  /// <CoSimulation> always runs as Model Exchange (with defaults when this is empty).
+  std::optional<model_exchange_options> model_exchange = std::nullopt;
 };
 
 /// An imported FMU: its extracted files, its model description and its loaded binary. The
@@ -52,6 +57,10 @@ class fmu : public std::enable_shared_from_this<fmu> {
   /// \throws component_error naming the instance if the FMU refuses (e.g. wrong GUID).
   std::unique_ptr<component> instantiate(const std::string& instance_name,
                                          const instance_options& options = {});
+
+  /// The address of `name` in the loaded binary, or nullptr (the Model Exchange runner
+  /// resolves its functions with it).
+  void* symbol(const char* name) const noexcept;
 
   class impl;
 

@@ -49,6 +49,8 @@ struct variable_description {
   std::string declared_type;  ///< "" if none
   std::string description;
   int line = 0;  ///< line in modelDescription.xml (0 when built in code)
+  /// Real/@derivative: index into `variables` of the state this variable is the derivative of.
+  std::optional<std::size_t> derivative_of = std::nullopt;
 };
 
 /// An output and the variables it depends on (ModelStructure/Outputs).
@@ -66,6 +68,18 @@ struct cosim_capabilities {
   bool can_interpolate_inputs = false;
   int max_output_derivative_order = 0;
   bool can_run_asynchronuously = false;
+  bool can_be_instantiated_only_once_per_process = false;
+  bool can_not_use_memory_management_functions = false;
+  bool can_get_and_set_fmu_state = false;
+  bool can_serialize_fmu_state = false;
+  bool provides_directional_derivative = false;
+};
+
+/// ModelExchange capability flags.
+struct model_exchange_capabilities {
+  std::string model_identifier;
+  bool needs_execution_tool = false;
+  bool completed_integrator_step_not_needed = false;
   bool can_be_instantiated_only_once_per_process = false;
   bool can_not_use_memory_management_functions = false;
   bool can_get_and_set_fmu_state = false;
@@ -96,6 +110,12 @@ struct model_description {
   stride::cosim::default_experiment default_experiment;
   std::vector<variable_description> variables;
   std::vector<output_dependency> outputs;
+  std::optional<model_exchange_capabilities> model_exchange =
+      std::nullopt;  ///< nullopt without <ModelExchange>
+  std::size_t number_of_event_indicators = 0;
+  /// ModelStructure/Derivatives: indices into `variables` of the state derivatives, in the
+  /// order of the continuous-state vector.
+  std::vector<std::size_t> derivatives{};
 
   /// The variable called `name`, or nullptr.
   const variable_description* find(std::string_view name) const noexcept;

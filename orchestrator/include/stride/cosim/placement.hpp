@@ -59,6 +59,12 @@ class function_placement final : public placement_resolver {
   function make_;
 };
 
+/// How `spec` runs `f`: the Model Exchange settings, or nullopt for Co-Simulation (an FMU
+/// offering both runs Co-Simulation unless kind="model-exchange").
+/// \throws fmu_import_error when the kind or the solver settings do not fit the FMU.
+std::optional<model_exchange_options> model_exchange_choice(const component_spec& spec,
+                                                            const fmu& f);
+
 /// Components without a `worker`: the FMU is imported into this process (each file once,
 /// however many instances use it) and instantiated.
 class in_process_placement final : public placement_resolver {

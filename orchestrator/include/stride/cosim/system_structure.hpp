@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "stride/cosim/algorithm.hpp"
+#include "stride/cosim/model_exchange.hpp"
 #include "stride/cosim/time.hpp"
 
 namespace stride::cosim {
@@ -48,6 +49,10 @@ struct component_spec {
   std::string worker;
   std::vector<parameter_setting> parameters;
   source_location where;
+  /// "co-simulation", "model-exchange", or "" (Co-Simulation when the FMU offers it).
+  std::string kind{};
+  /// The integrator of a Model Exchange component (solver, method, rtol, atol, max_step).
+  std::optional<model_exchange_options> model_exchange = std::nullopt;
 };
 
 /// Where the component part of a "comp.var" name ends: at the dot after the longest prefix that

@@ -1,0 +1,359 @@
+// The Model Exchange runner (orchestrator/src/me_component.cpp) on the project's own ME test
+// FMUs (me_fmus/): the oracles are closed-form solutions of their equations.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/fmu.hpp"
+#include "zip_writer.hpp"
+
+namespace stride::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class me_component_test : public ::testing::Test {
+ protected:
+  // packs me_fmus/<model>.xml and the built me_<model>.so into an FMU
+  std::shared_ptr<fmu> load(const std::string& model, const std::string& library) {
+    const fs::path file = dir_.path() / (model + ".fmu");
+    test::write_zip(file, {{"modelDescription.xml",
+                            read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (model + ".xml"))},
+                           {"binaries/linux64/me_" + model + ".so", read_text(library)}});
+    return fmu::load(file);
+  }
+
+  temp_dir dir_{"stride-me-test-"};
+};
+
+struct run_trace {
+  std::vector<double> t;
+  std::vector<value_block> outputs;
+};
+
+// setup, initialization and `steps` communication steps of `dt` from `start`
+void initialise(component& c, double stop) {
+  c.setup(time_from_seconds(0), time_from_seconds(stop));
+  c.enter_initialization();
+  c.exit_initialization();
+}
+
+run_trace advance(component& c, const variable_refs& outs, double from, double dt, int steps) {
+  c.expose({}, outs);
+  run_trace trace;
+  for (int i = 0; i < steps; ++i) {
+    const time_point t = time_from_seconds(from) + i * duration_from_seconds(dt);
+    value_block out;
+    out.resize_for(outs);
+    EXPECT_EQ(c.step(t, duration_from_seconds(dt), {}, out), step_result::complete);
+    trace.t.push_back(to_seconds(t + duration_from_seconds(dt)));
+    trace.outputs.push_back(out);
+  }
+  return trace;
+}
+
+model_exchange_options cvode(double rtol) {
+  model_exchange_options o;
+  o.rtol = rtol;
+  o.atol = rtol * 1e-3;
+  return o;
+}
+
+std::unique_ptr<component> make(fmu& f, const std::string& name, model_exchange_options o) {
+  instance_options io;
+  io.model_exchange = o;
+  return f.instantiate(name, io);
+}
+
+// over one communication step: CVODE restarts at every communication point, so over many the
+// global error adds up (docs/model-exchange.md)
+TEST_F(me_component_test, decay_error_is_within_the_tolerance_and_shrinks_with_it) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  variable_refs x;
+  x.reals = {0};
+  std::vector<double> errors;
+  for (double rtol : {1e-4, 1e-6, 1e-8}) {
+    auto c = make(*f, "decay", cvode(rtol));
+    initialise(*c, 2.0);
+    const auto trace = advance(*c, x, 0.0, 2.0, 1);
+    const double error = std::abs(trace.outputs.back().reals[0] - std::exp(-2.0));
+    EXPECT_LE(error, rtol) << "rtol " << rtol;
+    errors.push_back(error);
+  }
+  EXPECT_LT(errors[1], errors[0]);
+  EXPECT_LT(errors[2], errors[1]);
+}
+
+TEST_F(me_component_test, adams_also_follows_the_closed_form) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto o = cvode(1e-8);
+  o.method = model_exchange_options::method_kind::adams;
+  auto c = make(*f, "decay", o);
+  initialise(*c, 1.0);
+  variable_refs x;
+  x.reals = {0};
+  const auto trace = advance(*c, x, 0.0, 0.1, 10);
+  for (std::size_t i = 0; i < trace.t.size(); ++i) {
+    EXPECT_NEAR(trace.outputs[i].reals[0], std::exp(-trace.t[i]), 1e-7) << trace.t[i];
+  }
+}
+
+// bounce k+1 follows bounce k after a flight of 2 e^k t1, t1 = sqrt(2 h0 / g)
+TEST_F(me_component_test, bouncing_ball_bounces_at_the_closed_form_times) {
+  auto f = load("ball", STRIDE_ME_BALL);
+  auto c = make(*f, "ball", cvode(1e-10));
+  initialise(*c, 3.0);
+  variable_refs outs;
+  outs.reals = {6};     // last_bounce
+  outs.integers = {0};  // bounces
+  const auto trace = advance(*c, outs, 0.0, 0.01, 249);
+  std::vector<double> bounces;
+  int count = 0;
+  for (const auto& o : trace.outputs) {
+    if (o.integers[0] == count) continue;
+    EXPECT_EQ(o.integers[0], count + 1);  // never two bounces in one communication step
+    count = o.integers[0];
+    bounces.push_back(o.reals[0]);
+  }
+  ASSERT_GE(bounces.size(), 10u);
+  const double g = 9.81, e = 0.7, t1 = std::sqrt(2.0 / g);
+  double expected = t1;
+  for (std::size_t k = 0; k < 10; ++k) {
+    EXPECT_NEAR(bounces[k], expected, 1e-6) << "bounce " << k + 1;
+    expected += 2 * std::pow(e, static_cast<double>(k + 1)) * t1;
+  }
+}
+
+// level k holds from k * period on; x integrates the level
+TEST_F(me_component_test, stair_switches_exactly_at_its_time_events) {
+  auto f = load("stair", STRIDE_ME_STAIR);
+  auto c = make(*f, "stair", cvode(1e-8));
+  initialise(*c, 2.0);
+  variable_refs outs;
+  outs.reals = {0, 2};  // x, last_switch
+  outs.integers = {0};  // level
+  const auto trace = advance(*c, outs, 0.0, 0.1, 20);
+  const double period = 0.3;
+  for (std::size_t i = 0; i < trace.t.size(); ++i) {
+    int level = 0;
+    double x = 0;
+    while ((level + 1) * period <= trace.t[i]) {
+      ++level;
+      x += trace.t[i] - level * period;
+    }
+    EXPECT_EQ(trace.outputs[i].integers[0], level) << "t " << trace.t[i];
+    if (level > 0) {
+      EXPECT_EQ(trace.outputs[i].reals[1], level * period) << "t " << trace.t[i];
+    }
+    EXPECT_NEAR(trace.outputs[i].reals[0], x, 1e-7) << "t " << trace.t[i];
+  }
+}
+
+// x' = -1000 x: BDF integrates it; explicit Euler at a step of 0.01 s multiplies x by -9 per step
+TEST_F(me_component_test, bdf_solves_a_stiff_system_where_euler_diverges) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  variable_refs k;
+  k.reals = {2};
+  value_block stiff;
+  stiff.reals = {1000.0};
+  variable_refs x;
+  x.reals = {0};
+
+  auto bdf = make(*f, "bdf", cvode(1e-6));
+  bdf->set_values(k, stiff);
+  initialise(*bdf, 1.0);
+  const auto trace = advance(*bdf, x, 0.0, 0.1, 10);
+  EXPECT_NEAR(trace.outputs.back().reals[0], 0.0, 1e-6);
+
+  model_exchange_options o;
+  o.solver = model_exchange_options::solver_kind::euler;
+  o.max_step = 0.01;
+  auto euler = make(*f, "euler", o);
+  euler->set_values(k, stiff);
+  initialise(*euler, 1000.0);
+  try {
+    advance(*euler, x, 0.0, 0.1, 10000);
+    FAIL() << "explicit Euler did not diverge";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'euler' at t = "));
+    EXPECT_THAT(e.what(), HasSubstr("explicit Euler diverged"));
+  }
+}
+
+TEST_F(me_component_test, euler_without_a_step_is_refused) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  model_exchange_options o;
+  o.solver = model_exchange_options::solver_kind::euler;
+  EXPECT_THROW(make(*f, "decay", o), component_error);
+}
+
+// x = e^-t falls below 1/2 at ln 2: the FMU asks for a step event after the first internal
+// step that ends below, within the communication step that holds ln 2
+TEST_F(me_component_test, step_events_are_handled_after_the_integrator_step) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-8));
+  variable_refs threshold;
+  threshold.reals = {4};
+  value_block half;
+  half.reals = {0.5};
+  c->set_values(threshold, half);
+  initialise(*c, 1.0);
+  variable_refs outs;
+  outs.reals = {5};     // crossed_at
+  outs.integers = {0};  // crossed
+  const auto trace = advance(*c, outs, 0.0, 0.1, 10);
+  for (std::size_t i = 0; i < trace.t.size(); ++i) {
+    EXPECT_EQ(trace.outputs[i].integers[0], trace.t[i] >= std::log(2.0) ? 1 : 0) << trace.t[i];
+  }
+  const double at = trace.outputs.back().reals[0];
+  EXPECT_GE(at, std::log(2.0));
+  EXPECT_LE(at, 0.7);  // the communication step (0.6, 0.7] holds ln 2
+}
+
+// terminateSimulation at the third bounce ends the step that holds it, and every later one
+TEST_F(me_component_test, terminate_simulation_ends_the_run_at_the_event) {
+  auto f = load("ball", STRIDE_ME_BALL);
+  auto c = make(*f, "ball", cvode(1e-8));
+  variable_refs max;
+  max.integers = {1};
+  value_block three;
+  three.integers = {3};
+  c->set_values(max, three);
+  initialise(*c, 3.0);
+  variable_refs outs;
+  outs.integers = {0};
+  c->expose({}, outs);
+  const double t1 = std::sqrt(2.0 / 9.81);
+  const double third = t1 + 2 * 0.7 * t1 + 2 * 0.49 * t1;
+  const duration dt = duration_from_seconds(0.01);
+  time_point t = time_from_seconds(0);
+  value_block out;
+  while (c->step(t, dt, {}, out) == step_result::complete) t += dt;
+  EXPECT_LT(to_seconds(t), third);
+  EXPECT_GE(to_seconds(t + dt), third);
+  EXPECT_EQ(c->step(t + dt, dt, {}, out), step_result::terminate);
+}
+
+// without rtol the FMU's DefaultExperiment/@tolerance (1e-6) is used, with atol = rtol
+TEST_F(me_component_test, tolerances_default_to_the_default_experiment) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  variable_refs x;
+  x.reals = {0};
+  const auto run = [&](const model_exchange_options& o) {
+    auto c = make(*f, "decay", o);
+    initialise(*c, 1.0);
+    return advance(*c, x, 0.0, 1.0, 1).outputs.back().reals[0];
+  };
+  model_exchange_options explicit_default;
+  explicit_default.rtol = 1e-6;
+  explicit_default.atol = 1e-6;
+  model_exchange_options looser;
+  looser.rtol = 1e-4;
+  EXPECT_EQ(run({}), run(explicit_default));
+  EXPECT_NE(run({}), run(looser));
+}
+
+// k = NaN makes the FMU's derivative NaN: refused at once, naming the derivative
+TEST_F(me_component_test, nan_derivatives_stop_the_run_naming_the_variable) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  variable_refs k;
+  k.reals = {2};
+  value_block nan;
+  nan.reals = {std::nan("")};
+  c->set_values(k, nan);
+  initialise(*c, 1.0);
+  variable_refs x;
+  x.reals = {0};
+  try {
+    advance(*c, x, 0.0, 0.1, 1);
+    FAIL() << "NaN derivative accepted";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'decay' at t = 0 s"));
+    EXPECT_THAT(e.what(), HasSubstr("fmi2GetDerivatives gave der(x) = NaN"));
+  }
+}
+
+// fmi2Discard from the equations after t = 0.25 s: the run stops there, naming call and time
+TEST_F(me_component_test, an_fmu_refusing_its_equations_stops_the_run_naming_the_time) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  variable_refs fail_after;
+  fail_after.reals = {15};
+  value_block quarter;
+  quarter.reals = {0.25};
+  c->set_values(fail_after, quarter);
+  initialise(*c, 1.0);
+  variable_refs x;
+  x.reals = {0};
+  advance(*c, x, 0.0, 0.1, 2);  // before 0.25 s all is well
+  try {
+    advance(*c, x, 0.2, 0.1, 1);
+    FAIL() << "fmi2Discard ignored";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), ::testing::MatchesRegex("component 'decay' at t = 0\\.2[5-9][0-9]* s: "
+                                                  "fmi2GetDerivatives returned fmi2Discard"));
+  }
+}
+
+// Adams with fixed-point iteration on x' = -1e6 x must take steps of about 1e-6 s
+TEST_F(me_component_test, a_solver_that_cannot_progress_names_the_reason) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto o = cvode(1e-6);
+  o.method = model_exchange_options::method_kind::adams;
+  auto c = make(*f, "decay", o);
+  variable_refs k;
+  k.reals = {2};
+  value_block stiff;
+  stiff.reals = {1e6};
+  c->set_values(k, stiff);
+  initialise(*c, 10.0);
+  variable_refs x;
+  x.reals = {0};
+  try {
+    advance(*c, x, 0.0, 10.0, 1);
+    FAIL() << "Adams crossed a very stiff system";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'decay' at t = 0 s"));
+    EXPECT_THAT(e.what(), HasSubstr("too much work"));
+  }
+}
+
+// a saved state restored into a fresh instance continues exactly like the original
+TEST_F(me_component_test, a_restored_state_continues_byte_identically) {
+  auto f = load("ball", STRIDE_ME_BALL);
+  variable_refs outs;
+  outs.reals = {0, 2, 6};
+  outs.integers = {0};
+  auto original = make(*f, "ball", cvode(1e-8));
+  initialise(*original, 3.0);
+  advance(*original, outs, 0.0, 0.01, 100);
+  const auto image = original->save_state();
+  const auto expected = advance(*original, outs, 1.0, 0.01, 150);
+
+  auto resumed = make(*f, "ball", cvode(1e-8));
+  initialise(*resumed, 3.0);
+  resumed->restore_state(image);
+  const auto actual = advance(*resumed, outs, 1.0, 0.01, 150);
+  ASSERT_EQ(actual.outputs.size(), expected.outputs.size());
+  for (std::size_t i = 0; i < actual.outputs.size(); ++i) {
+    EXPECT_EQ(actual.outputs[i].reals, expected.outputs[i].reals) << actual.t[i];
+    EXPECT_EQ(actual.outputs[i].integers, expected.outputs[i].integers) << actual.t[i];
+  }
+}
+
+}  // namespace
+}  // namespace stride::cosim

@@ -1,0 +1,33 @@
+/* The equations of one Model Exchange test FMU; me_fmu.c wraps them in the FMI 2.0 Model
+ * Exchange interface. Reals and integers are addressed by value reference. */
+#ifndef STRIDE_TESTS_ME_MODEL_H
+#define STRIDE_TESTS_ME_MODEL_H
+
+#include "stride/fmi2/fmi2_me_api.h"
+
+#define ME_MAX_REALS 16
+#define ME_MAX_INTEGERS 4
+
+typedef struct {
+  double time;
+  double r[ME_MAX_REALS];
+  int i[ME_MAX_INTEGERS];
+  double next_event; /* < 0: none */
+  int terminate;
+} me_data;
+
+extern const char* const me_guid;
+extern const int me_state_count;
+extern const int me_indicator_count;
+extern const fmi2ValueReference me_states[];      /* value references of the states */
+extern const fmi2ValueReference me_derivatives[]; /* and of their derivatives */
+
+void me_start(me_data* m);     /* start values */
+void me_equations(me_data* m); /* derivatives (and outputs) from the states */
+void me_indicators(const me_data* m, double z[]);
+/* One pass of event iteration at m->time; returns whether the continuous states changed. */
+int me_event(me_data* m);
+/* After an integrator step: whether the model asks for a step event. */
+int me_step_event(me_data* m);
+
+#endif /* STRIDE_TESTS_ME_MODEL_H */

@@ -1,0 +1,122 @@
+// Model Exchange components in systems: next to a Co-Simulation FMU, chosen by kind, and saved
+// and restored with the rest of the system.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "stride/cosim/archive.hpp"
+#include "stride/cosim/error.hpp"
+#include "stride/cosim/execution.hpp"
+#include "stride/cosim/system_builder.hpp"
+#include "zip_writer.hpp"
+
+namespace stride::cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class me_system_test : public ::testing::Test {
+ protected:
+  me_system_test() {
+    test::write_zip(
+        decay_, {{"modelDescription.xml", read_text(fs::path(STRIDE_ME_FMU_SOURCES) / "decay.xml")},
+                 {"binaries/linux64/me_decay.so", read_text(STRIDE_ME_DECAY)}});
+  }
+
+  // decay.u <- source.y = offset (gain 0); decay.x -> source.u
+  system_structure system(double stop) const {
+    system_structure s;
+    s.stop = time_from_seconds(stop);
+    s.base_step = duration_from_seconds(0.1);
+    auto& d = s.add_component("decay", decay_.string());
+    model_exchange_options o;
+    o.rtol = 1e-9;
+    o.atol = 1e-12;
+    d.model_exchange = o;
+    auto& c = s.add_component("source", "stride_test");
+    c.parameters.push_back({"gain", "0", {}});
+    c.parameters.push_back({"offset", "0.5", {}});
+    s.connect("source.y", "decay.u");
+    s.connect("decay.x", "source.u");
+    return s;
+  }
+
+  static observed_variable observe(execution& ex, const std::string& component,
+                                   const std::string& variable) {
+    const std::size_t c = *ex.find_component(component);
+    return ex.observe({c, *ex.component_at(c).model_description().index_of(variable)});
+  }
+
+  temp_dir dir_{"stride-me-system-"};
+  fs::path decay_ = dir_.path() / "decay.fmu";
+};
+
+// x' = -x + 1/2 from x(0) = 1: x = 1/2 + e^-t / 2
+TEST_F(me_system_test, a_model_exchange_fmu_runs_beside_a_co_simulation_fmu) {
+  auto built = build_system(system(2.0));
+  auto& ex = *built.execution;
+  const auto x = observe(ex, "decay", "x");
+  const auto u = observe(ex, "source", "u");
+  const auto y = observe(ex, "source", "y");
+  const auto du = observe(ex, "decay", "u");
+  const auto result = ex.simulate_until(built.stop);
+  EXPECT_EQ(result.end_time, built.stop);
+  EXPECT_EQ(ex.real_value(y), 0.5);
+  EXPECT_EQ(ex.real_value(du), 0.5);
+  EXPECT_NEAR(ex.real_value(x), 0.5 + 0.5 * std::exp(-2.0), 1e-6);
+  EXPECT_EQ(ex.real_value(u), ex.real_value(x));  // the ME output reached the CS input
+}
+
+TEST_F(me_system_test, solver_settings_on_a_co_simulation_fmu_are_refused) {
+  auto s = system(1.0);
+  s.components[1].model_exchange = model_exchange_options{};
+  try {
+    build_system(s);
+    FAIL() << "solver settings accepted on a Co-Simulation component";
+  } catch (const fmu_import_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'source'"));
+    EXPECT_THAT(e.what(), HasSubstr("solver settings need that kind"));
+  }
+  s.components[1].model_exchange.reset();
+  s.components[1].kind = "model-exchange";
+  EXPECT_THROW(build_system(s), fmu_import_error);  // stride_test has no <ModelExchange>
+}
+
+// a checkpoint of the whole system, restored into a fresh build, continues bit for bit
+TEST_F(me_system_test, a_system_with_a_model_exchange_component_resumes_byte_identically) {
+  auto first = build_system(system(2.0));
+  const auto x1 = observe(*first.execution, "decay", "x");
+  first.execution->simulate_until(time_from_seconds(0.7));
+  const auto image = first.execution->save_state_bytes();
+  std::vector<double> expected;
+  for (int i = 0; i < 13; ++i) {
+    first.execution->step();
+    expected.push_back(first.execution->real_value(x1));
+  }
+
+  auto second = build_system(system(2.0));
+  const auto x2 = observe(*second.execution, "decay", "x");
+  second.execution->initialize(second.stop);
+  second.execution->restore_state_bytes(image);
+  std::vector<double> actual;
+  for (int i = 0; i < 13; ++i) {
+    second.execution->step();
+    actual.push_back(second.execution->real_value(x2));
+  }
+  EXPECT_EQ(actual, expected);
+  EXPECT_NE(expected.front(), expected.back());  // the state moves: the comparison means something
+}
+
+}  // namespace
+}  // namespace stride::cosim
