@@ -19,15 +19,30 @@ namespace stride::cosim {
 namespace {
 
 // The functions Model Exchange uses besides its own ten.
-#define STRIDE_ME_COMMON_FUNCTIONS(X)                                                       \
-  X(fmi2Instantiate)                                                                        \
-  X(fmi2FreeInstance)                                                                       \
-  X(fmi2SetupExperiment)                                                                    \
-  X(fmi2EnterInitializationMode)                                                            \
-  X(fmi2ExitInitializationMode) X(fmi2Terminate) X(fmi2GetReal) X(fmi2GetInteger)           \
-      X(fmi2GetBoolean) X(fmi2GetString) X(fmi2SetReal) X(fmi2SetInteger) X(fmi2SetBoolean) \
-          X(fmi2SetString) X(fmi2GetFMUstate) X(fmi2SetFMUstate) X(fmi2FreeFMUstate)        \
-              X(fmi2SerializedFMUstateSize) X(fmi2SerializeFMUstate) X(fmi2DeSerializeFMUstate)
+// (one function per line; clang-format would reflow the list differently on every run)
+// clang-format off
+#define STRIDE_ME_COMMON_FUNCTIONS(X) \
+  X(fmi2Instantiate)                  \
+  X(fmi2FreeInstance)                 \
+  X(fmi2SetupExperiment)              \
+  X(fmi2EnterInitializationMode)      \
+  X(fmi2ExitInitializationMode)       \
+  X(fmi2Terminate)                    \
+  X(fmi2GetReal)                      \
+  X(fmi2GetInteger)                   \
+  X(fmi2GetBoolean)                   \
+  X(fmi2GetString)                    \
+  X(fmi2SetReal)                      \
+  X(fmi2SetInteger)                   \
+  X(fmi2SetBoolean)                   \
+  X(fmi2SetString)                    \
+  X(fmi2GetFMUstate)                  \
+  X(fmi2SetFMUstate)                  \
+  X(fmi2FreeFMUstate)                 \
+  X(fmi2SerializedFMUstateSize)       \
+  X(fmi2SerializeFMUstate)            \
+  X(fmi2DeSerializeFMUstate)
+// clang-format on
 
 struct me_functions {
 #define STRIDE_DECLARE_POINTER(name) name##TYPE* name = nullptr;

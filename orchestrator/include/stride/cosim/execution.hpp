@@ -116,7 +116,8 @@ class execution {
   /// variable when it is not an output of type Boolean, Integer, Enumeration or Real.
   void stop_when(variable_id var);
 
-  /// Freezes if needed and initializes the components; `stop` is passed to them.
+  /// Freezes if needed and initializes the components; `stop` is passed to them, and FMUs refuse
+  /// steps past it (simulate_until initializes with its own stop when this was not called).
   void initialize(std::optional<time_point> stop);
   bool initialized() const noexcept { return initialized_; }
 
