@@ -57,8 +57,9 @@ TEST(fmi3_model_description, reads_every_kind_of_the_test_fmu) {
       {"u64_in", kind::uint64},  {"b_in", kind::boolean},   {"s_in", kind::string},
       {"bin_in", kind::binary}};
   for (const auto& [name, k] : expected) {
+    const std::string& wanted = name;  // a structured binding cannot be captured (C++20)
     const auto it = std::find_if(d.variables.begin(), d.variables.end(),
-                                 [&](const variable& v) { return v.name == name; });
+                                 [&](const variable& v) { return v.name == wanted; });
     ASSERT_NE(it, d.variables.end()) << name;
     EXPECT_EQ(it->kind, k) << name;
   }
