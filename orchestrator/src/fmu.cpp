@@ -12,6 +12,7 @@
 #include <mutex>
 #include <vector>
 
+#include "fmi2_log.hpp"
 #include "fmi3_fmu.hpp"
 #include "me_component.hpp"
 #include "stride/common/files.hpp"
@@ -281,30 +282,11 @@ class fmu_component final : public component {
   static void logger(fmi2ComponentEnvironment env, fmi2String /*instance*/, fmi2Status status,
                      fmi2String category, fmi2String message, ...) {
     auto* self = static_cast<fmu_component*>(env);
-    if (self == nullptr || message == nullptr) return;
+    if (self == nullptr) return;
     std::va_list args;
     va_start(args, message);
-    std::va_list copy;
-    va_copy(copy, args);
-    const int n = std::vsnprintf(nullptr, 0, message, copy);
-    va_end(copy);
-    std::string text;
-    if (n > 0) {
-      text.resize(static_cast<std::size_t>(n) + 1);
-      std::vsnprintf(text.data(), text.size(), message, args);
-      text.resize(static_cast<std::size_t>(n));
-    }
+    detail::forward_fmi2_log(self->log_, self->name_, status, category, message, args);
     va_end(args);
-    log_level level = log_level::info;
-    if (status == fmi2Warning) level = log_level::warning;
-    if (status == fmi2Error || status == fmi2Fatal || status == fmi2Discard) {
-      level = log_level::error;
-    }
-    try {
-      self->log_(level, self->name_, category ? category : "", text);
-    } catch (...) {
-      // a throwing sink must not unwind through C code
-    }
   }
 
   std::shared_ptr<fmu> owner_;

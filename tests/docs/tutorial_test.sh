@@ -31,8 +31,9 @@ switch="$(column controller.turning run1/results.csv | awk '$2 == 1 { print $1; 
 grep -q '"status": "ok"' run1/manifest.json || fail "run1 manifest: $(cat run1/manifest.json)"
 
 # run2: the signals asked for on the command line, and the turn to the left the tutorial shows
-head -1 run2/results.csv | grep -q "robot.yaw" || fail "run2 did not record robot.yaw"
-head -1 run2/results.csv | grep -q "gait.a_move" || fail "run2 did not record gait.a_move"
+header="$(head -1 run2/results.csv)"
+grep -q "robot.yaw" <<< "$header" || fail "run2 did not record robot.yaw"
+grep -q "gait.a_move" <<< "$header" || fail "run2 did not record gait.a_move"
 column robot.yaw run2/results.csv | awk '
   NR > 1 { d = $2 - prev; if (d > 3.14159265) d -= 2 * 3.14159265; if (d < -3.14159265) d += 2 * 3.14159265; yaw += d }
   { prev = $2; if ($1 == 5) at5 = yaw; if ($1 == 10) at10 = yaw }

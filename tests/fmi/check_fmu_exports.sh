@@ -142,7 +142,7 @@ for lib in "$bin_dir"/*; do
         "library (libc, libm, libpthread, libdl, librt, ld-linux) nor shipped in binaries/$platform/"
     fi
   done <<< "$needed"
-  if ((bundled)) && ! readelf -d "$lib" | grep -E '\((RUNPATH|RPATH)\)' | grep -q '\$ORIGIN'; then
+  if ((bundled)) && ! grep -qE '\((RUNPATH|RPATH)\).*\$ORIGIN' <<< "$(readelf -d "$lib")"; then
     error "[exports.needed] $(basename "$lib") needs libraries shipped next to it but has no" \
       "RPATH/RUNPATH \$ORIGIN to find them"
   fi

@@ -33,8 +33,11 @@ fmu="$work/src/build/fmus/walk_then_turn.fmu"
 # and its FMI 3.0 FMU beside it, with the 3.0 binary layout
 fmu3="$work/src/build/fmus/fmi3/walk_then_turn.fmu"
 [ -f "$fmu3" ] || fail "no $fmu3"
-unzip -l "$fmu3" | grep -q "binaries/x86_64-linux/walk_then_turn.so" || fail "no 3.0 binary in $fmu3"
-unzip -p "$fmu3" modelDescription.xml | grep -q 'fmiVersion="3.0"' || fail "$fmu3 is not FMI 3.0"
+# (listings go through variables: with pipefail, `unzip | grep -q` fails when grep stops reading early)
+listing="$(unzip -l "$fmu3")"
+grep -q "binaries/x86_64-linux/walk_then_turn.so" <<< "$listing" || fail "no 3.0 binary in $fmu3"
+description="$(unzip -p "$fmu3" modelDescription.xml)"
+grep -q 'fmiVersion="3.0"' <<< "$description" || fail "$fmu3 is not FMI 3.0"
 
 # a shipped model by its name, resolved in share/stride/models, its FMUs in share/stride/fmus
 cd "$work"

@@ -5,7 +5,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
@@ -28,15 +30,23 @@ std::string read_text(const fs::path& file) {
 class me_component_test : public ::testing::Test {
  protected:
   // packs me_fmus/<model>.xml and the built me_<model>.so into an FMU
-  std::shared_ptr<fmu> load(const std::string& model, const std::string& library) {
-    const fs::path file = dir_.path() / (model + ".fmu");
-    test::write_zip(file, {{"modelDescription.xml",
-                            read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (model + ".xml"))},
+  // `edit` replaces its first string by its second in the model description (when non-empty)
+  std::shared_ptr<fmu> load(const std::string& model, const std::string& library,
+                            const std::pair<std::string, std::string>& edit = {}) {
+    std::string description = read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (model + ".xml"));
+    if (!edit.first.empty()) {
+      const auto at = description.find(edit.first);
+      EXPECT_NE(at, std::string::npos) << edit.first;
+      if (at != std::string::npos) description.replace(at, edit.first.size(), edit.second);
+    }
+    const fs::path file = dir_.path() / (model + std::to_string(++loaded_) + ".fmu");
+    test::write_zip(file, {{"modelDescription.xml", description},
                            {"binaries/linux64/me_" + model + ".so", read_text(library)}});
     return fmu::load(file);
   }
 
   temp_dir dir_{"stride-me-test-"};
+  int loaded_ = 0;
 };
 
 struct run_trace {
@@ -353,6 +363,183 @@ TEST_F(me_component_test, a_restored_state_continues_byte_identically) {
     EXPECT_EQ(actual.outputs[i].reals, expected.outputs[i].reals) << actual.t[i];
     EXPECT_EQ(actual.outputs[i].integers, expected.outputs[i].integers) << actual.t[i];
   }
+}
+
+// Inputs of every type are set at the communication point: a frozen x stands still exactly,
+// and the string and Boolean echoes come back through fmi2GetString and fmi2GetBoolean.
+TEST_F(me_component_test, inputs_of_every_type_reach_the_equations_at_communication_points) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-8));
+  initialise(*c, 1.0);
+  variable_refs ins;
+  ins.reals = {3};     // u
+  ins.booleans = {0};  // frozen
+  ins.strings = {0};   // tag
+  variable_refs outs;
+  outs.reals = {0};     // x
+  outs.booleans = {1};  // was_frozen
+  outs.strings = {1};   // tag_seen
+  c->expose(ins, outs);
+  const auto step = [&](double t, bool frozen, const std::string& tag) {
+    value_block in;
+    in.reals = {0.0};
+    in.booleans = {frozen};
+    in.strings = {tag};
+    value_block out;
+    out.resize_for(outs);
+    EXPECT_EQ(c->step(time_from_seconds(t), duration_from_seconds(0.1), in, out),
+              step_result::complete);
+    return out;
+  };
+  const auto moving = step(0.0, false, "first");
+  EXPECT_NEAR(moving.reals[0], std::exp(-0.1), 1e-6);
+  EXPECT_EQ(moving.booleans[0], false);
+  EXPECT_EQ(moving.strings[0], "first");
+  const auto held = step(0.1, true, "second");
+  EXPECT_EQ(held.reals[0], moving.reals[0]);
+  EXPECT_EQ(held.booleans[0], true);
+  EXPECT_EQ(held.strings[0], "second");
+  const auto again = step(0.2, false, "third");
+  EXPECT_NEAR(again.reals[0], std::exp(-0.2), 1e-6);
+}
+
+// the FMU's printf-style messages reach the instance's sink, formatted, at their status' level
+TEST_F(me_component_test, fmu_log_messages_reach_the_sink_with_their_level) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  std::vector<std::tuple<log_level, std::string, std::string>> got;
+  instance_options io;
+  io.model_exchange = cvode(1e-6);
+  io.logging_on = true;
+  io.log = [&](log_level level, std::string_view source, std::string_view, std::string_view text) {
+    got.emplace_back(level, std::string(source), std::string(text));
+  };
+  auto c = f->instantiate("logged", io);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0], std::make_tuple(log_level::info, std::string("logged"),
+                                    std::string("instantiated with 1 continuous states")));
+  variable_refs fail_after;
+  fail_after.reals = {15};
+  value_block soon;
+  soon.reals = {0.05};
+  c->set_values(fail_after, soon);
+  initialise(*c, 1.0);
+  variable_refs x;
+  x.reals = {0};
+  EXPECT_THROW(advance(*c, x, 0.0, 0.1, 1), component_error);
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_EQ(std::get<0>(got[1]), log_level::error);
+  // the first evaluation of the equations after 0.05 s within the step (0, 0.1]
+  EXPECT_THAT(std::get<2>(got[1]),
+              ::testing::MatchesRegex("equations refused at t = 0\\.0[5-9][0-9]*"));
+}
+
+// a throwing sink is contained: the C code of the FMU is never unwound
+TEST_F(me_component_test, a_throwing_log_sink_does_not_unwind_through_the_fmu) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  instance_options io;
+  io.logging_on = true;
+  io.log = [](log_level, std::string_view, std::string_view, std::string_view) {
+    throw std::runtime_error("sink full");
+  };
+  EXPECT_NO_THROW(f->instantiate("logged", io));
+}
+
+TEST_F(me_component_test, an_event_iteration_that_never_settles_is_stopped) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  variable_refs chatter;
+  chatter.reals = {14};
+  value_block on;
+  on.reals = {1.0};
+  c->set_values(chatter, on);
+  c->setup(time_from_seconds(0), time_from_seconds(1.0));
+  c->enter_initialization();
+  try {
+    c->exit_initialization();
+    FAIL() << "an endless event iteration was accepted";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'decay': event iteration did not settle after"));
+  }
+}
+
+// threshold = +inf exposed as an output: refused, naming the value reference
+TEST_F(me_component_test, a_non_finite_output_is_refused_naming_the_reference) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  variable_refs threshold;
+  threshold.reals = {4};
+  value_block inf;
+  inf.reals = {std::numeric_limits<double>::infinity()};
+  c->set_values(threshold, inf);
+  initialise(*c, 1.0);
+  try {
+    advance(*c, threshold, 0.0, 0.1, 1);
+    FAIL() << "an infinite output was passed on";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("fmi2GetReal gave value reference 4 a non-finite value"));
+  }
+}
+
+// a value reference the FMU does not have: its fmi2Error is reported with the function
+TEST_F(me_component_test, an_fmu_error_names_the_component_and_the_function) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  const auto refused = [&](variable_refs refs, value_block values, const std::string& function) {
+    try {
+      c->set_values(refs, values);
+      FAIL() << function << " accepted an unknown value reference";
+    } catch (const component_error& e) {
+      EXPECT_THAT(e.what(), HasSubstr("component 'decay': " + function + " returned fmi2Error"));
+    }
+  };
+  variable_refs r;
+  r.integers = {99};
+  value_block v;
+  v.integers = {1};
+  refused(r, v, "fmi2SetInteger");
+  r = {};
+  r.booleans = {99};
+  v = {};
+  v.booleans = {true};
+  refused(r, v, "fmi2SetBoolean");
+  r = {};
+  r.strings = {99};
+  v = {};
+  v.strings = {"x"};
+  refused(r, v, "fmi2SetString");
+  variable_refs unknown;
+  unknown.integers = {99};
+  value_block out;
+  EXPECT_THROW(c->get_values(unknown, out), component_error);
+}
+
+TEST_F(me_component_test, an_fmu_without_state_support_says_so) {
+  auto f = load("decay", STRIDE_ME_DECAY, {"canGetAndSetFMUstate=\"true\"", ""});
+  auto c = make(*f, "decay", cvode(1e-6));
+  initialise(*c, 1.0);
+  try {
+    c->save_state();
+    FAIL() << "a state was saved without canGetAndSetFMUstate";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("cannot save its state"));
+  }
+  EXPECT_THROW(c->restore_state({}), component_error);
+}
+
+TEST_F(me_component_test, a_foreign_or_truncated_image_is_refused) {
+  auto f = load("decay", STRIDE_ME_DECAY);
+  auto c = make(*f, "decay", cvode(1e-6));
+  initialise(*c, 1.0);
+  const std::vector<std::byte> foreign(64, std::byte{7});
+  try {
+    c->restore_state(foreign);
+    FAIL() << "a foreign image was restored";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("not a Model Exchange runner's"));
+  }
+  auto image = c->save_state();
+  image.resize(image.size() / 2);
+  EXPECT_THROW(c->restore_state(image), validation_error);
 }
 
 }  // namespace

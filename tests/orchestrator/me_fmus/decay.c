@@ -1,6 +1,10 @@
 /* x' = -k x + u, x(0) = 1: with u = 0 the closed form is exp(-k t); with a large k it is
- * stiff. The input u changes only at communication points. Value references: 0 x, 1 der(x),
- * 2 k, 3 u, 4 threshold, 5 crossed_at; integer 0 crossed. */
+ * stiff. The input u changes only at communication points; while the Boolean input `frozen` is
+ * true, x stands still. Value references: reals 0 x, 1 der(x), 2 k, 3 u, 4 threshold,
+ * 5 crossed_at; integer 0 crossed; Booleans 0 frozen, 1 was_frozen (its echo); strings 0 tag,
+ * 1 tag_seen (its echo). */
+#include <string.h>
+
 #include "me_model.h"
 
 const char* const me_guid = "{stride-me-decay}";
@@ -14,7 +18,9 @@ void me_start(me_data* m) {
   m->r[2] = 1.0; /* k */
 }
 void me_equations(me_data* m) {
-  m->r[1] = -m->r[2] * m->r[0] + m->r[3]; /* u: r[3] */
+  m->r[1] = m->b[0] ? 0.0 : -m->r[2] * m->r[0] + m->r[3]; /* u: r[3] */
+  m->b[1] = m->b[0];
+  memcpy(m->s[1], m->s[0], sizeof m->s[0]);
 }
 void me_indicators(const me_data* m, double z[]) {
   (void)m;

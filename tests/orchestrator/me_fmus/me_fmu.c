@@ -1,4 +1,6 @@
 /* The FMI 2.0 Model Exchange interface around one me_model.h model (test FMUs only). */
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -6,8 +8,24 @@
 
 typedef struct {
   me_data m;
-  fmi2CallbackFunctions cb;
+  const fmi2CallbackFunctions* cb; /* FMI 2.0: the importer keeps it alive */
+  int logging;
+  char name[ME_STRING_SIZE];
 } instance;
+
+#define CHATTER (ME_MAX_REALS - 2)
+#define FAIL_AFTER (ME_MAX_REALS - 1)
+
+static void say(const instance* s, fmi2Status status, const char* category, const char* format,
+                ...) {
+  if (!s->logging || s->cb == NULL || s->cb->logger == NULL) return;
+  char text[256];
+  va_list args;
+  va_start(args, format);
+  vsnprintf(text, sizeof text, format, args);
+  va_end(args);
+  s->cb->logger(s->cb->componentEnvironment, s->name, status, category, "%s", text);
+}
 
 static fmi2Status vr_ok(const fmi2ValueReference vr[], size_t n, size_t limit) {
   for (size_t k = 0; k < n; ++k) {
@@ -33,16 +51,17 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const 
 fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, fmi2String uri,
                               const fmi2CallbackFunctions* cb, fmi2Boolean visible,
                               fmi2Boolean logging) {
-  (void)name;
   (void)uri;
   (void)visible;
-  (void)logging;
-  (void)cb;
   if (type != fmi2ModelExchange || guid == NULL || strcmp(guid, me_guid) != 0) return NULL;
   instance* s = calloc(1, sizeof *s);
   if (s == NULL) return NULL;
+  s->cb = cb;
+  s->logging = logging == fmi2True;
+  strncpy(s->name, name ? name : "", sizeof s->name - 1);
   s->m.next_event = -1;
   me_start(&s->m);
+  say(s, fmi2OK, "logAll", "instantiated with %d continuous states", me_state_count);
   return s;
 }
 void fmi2FreeInstance(fmi2Component c) {
@@ -108,30 +127,35 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 }
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                           fmi2Boolean v[]) {
-  (void)c;
-  (void)vr;
-  (void)v;
-  return n == 0 ? fmi2OK : fmi2Error;
+  instance* s = c;
+  if (vr_ok(vr, n, ME_MAX_BOOLEANS) != fmi2OK) return fmi2Error;
+  me_equations(&s->m);
+  for (size_t k = 0; k < n; ++k) v[k] = s->m.b[vr[k]] ? fmi2True : fmi2False;
+  return fmi2OK;
 }
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                           const fmi2Boolean v[]) {
-  (void)c;
-  (void)vr;
-  (void)v;
-  return n == 0 ? fmi2OK : fmi2Error;
+  instance* s = c;
+  if (vr_ok(vr, n, ME_MAX_BOOLEANS) != fmi2OK) return fmi2Error;
+  for (size_t k = 0; k < n; ++k) s->m.b[vr[k]] = v[k] != fmi2False;
+  return fmi2OK;
 }
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2String v[]) {
-  (void)c;
-  (void)vr;
-  (void)v;
-  return n == 0 ? fmi2OK : fmi2Error;
+  instance* s = c;
+  if (vr_ok(vr, n, ME_MAX_STRINGS) != fmi2OK) return fmi2Error;
+  me_equations(&s->m);
+  for (size_t k = 0; k < n; ++k) v[k] = s->m.s[vr[k]];
+  return fmi2OK;
 }
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                          const fmi2String v[]) {
-  (void)c;
-  (void)vr;
-  (void)v;
-  return n == 0 ? fmi2OK : fmi2Error;
+  instance* s = c;
+  if (vr_ok(vr, n, ME_MAX_STRINGS) != fmi2OK) return fmi2Error;
+  for (size_t k = 0; k < n; ++k) {
+    if (v[k] == NULL || strlen(v[k]) >= ME_STRING_SIZE) return fmi2Error;
+    strcpy(s->m.s[vr[k]], v[k]);
+  }
+  return fmi2OK;
 }
 
 /* FMU state: a copy of the model data; serialized as its bytes */
@@ -193,7 +217,7 @@ fmi2Status fmi2EnterEventMode(fmi2Component c) {
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo* info) {
   instance* s = c;
   const int changed = me_event(&s->m);
-  info->newDiscreteStatesNeeded = fmi2False;
+  info->newDiscreteStatesNeeded = s->m.r[CHATTER] > 0 ? fmi2True : fmi2False;
   info->terminateSimulation = s->m.terminate ? fmi2True : fmi2False;
   info->nominalsOfContinuousStatesChanged = fmi2False;
   info->valuesOfContinuousStatesChanged = changed ? fmi2True : fmi2False;
@@ -231,8 +255,10 @@ fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t n) {
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real dx[], size_t n) {
   instance* s = c;
   if ((int)n != me_state_count) return fmi2Error;
-  /* the last real, when positive, is a time after which the equations refuse (fmi2Discard) */
-  if (s->m.r[ME_MAX_REALS - 1] > 0 && s->m.time > s->m.r[ME_MAX_REALS - 1]) return fmi2Discard;
+  if (s->m.r[FAIL_AFTER] > 0 && s->m.time > s->m.r[FAIL_AFTER]) {
+    say(s, fmi2Discard, "logStatusDiscard", "equations refused at t = %g", s->m.time);
+    return fmi2Discard;
+  }
   me_equations(&s->m);
   for (size_t k = 0; k < n; ++k) dx[k] = s->m.r[me_derivatives[k]];
   return fmi2OK;

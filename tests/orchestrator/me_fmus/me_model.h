@@ -1,5 +1,8 @@
 /* The equations of one Model Exchange test FMU; me_fmu.c wraps them in the FMI 2.0 Model
- * Exchange interface. Reals and integers are addressed by value reference. */
+ * Exchange interface. Variables of each type are addressed by value reference. The wrapper
+ * reads two reals of every model: the last (ME_MAX_REALS - 1), when positive, is a time after
+ * which the equations return fmi2Discard; the one before it, when positive, makes every event
+ * iteration ask for another pass. */
 #ifndef STRIDE_TESTS_ME_MODEL_H
 #define STRIDE_TESTS_ME_MODEL_H
 
@@ -7,11 +10,16 @@
 
 #define ME_MAX_REALS 16
 #define ME_MAX_INTEGERS 4
+#define ME_MAX_BOOLEANS 4
+#define ME_MAX_STRINGS 2
+#define ME_STRING_SIZE 64
 
 typedef struct {
   double time;
   double r[ME_MAX_REALS];
   int i[ME_MAX_INTEGERS];
+  int b[ME_MAX_BOOLEANS];
+  char s[ME_MAX_STRINGS][ME_STRING_SIZE];
   double next_event; /* < 0: none */
   int terminate;
 } me_data;
