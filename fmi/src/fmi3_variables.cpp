@@ -4,9 +4,6 @@
 #include <stdexcept>
 
 namespace stride::sdk {
-namespace {
-constexpr std::size_t k_none = static_cast<std::size_t>(-1);
-}
 
 fmi3_variables::fmi3_variables(const variable_table& table) {
   const std::vector<variable>& elements = table.variables();
@@ -40,11 +37,6 @@ fmi3_variables::fmi3_variables(const variable_table& table) {
 
   by_vr_.assign(next_free + 1, k_none);
   for (std::size_t i = 0; i < vars_.size(); ++i) by_vr_[vars_[i].value_reference] = i;
-}
-
-const fmi3_variable* fmi3_variables::find(std::uint32_t value_reference) const {
-  if (value_reference >= by_vr_.size() || by_vr_[value_reference] == k_none) return nullptr;
-  return &vars_[by_vr_[value_reference]];
 }
 
 const fmi3_variable& fmi3_variables::owner(const variable& element) const {

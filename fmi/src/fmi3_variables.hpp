@@ -33,13 +33,17 @@ class fmi3_variables {
   const std::vector<fmi3_variable>& all() const { return vars_; }
   /// The variable with this FMI 3.0 value reference, or nullptr (element references other than
   /// an array's first do not exist in FMI 3.0).
-  const fmi3_variable* find(std::uint32_t value_reference) const;
+  const fmi3_variable* find(std::uint32_t value_reference) const {
+    if (value_reference >= by_vr_.size() || by_vr_[value_reference] == k_none) return nullptr;
+    return &vars_[by_vr_[value_reference]];
+  }
   const fmi3_variable& time() const { return vars_.back(); }
   /// The FMI 3.0 variable an element of the table belongs to.
   const fmi3_variable& owner(const variable& element) const;
 
  private:
   std::vector<fmi3_variable> vars_;
+  static constexpr std::size_t k_none = static_cast<std::size_t>(-1);
   std::vector<std::size_t> by_vr_;  // value reference → index into vars_ (npos: none)
 };
 

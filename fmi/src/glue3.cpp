@@ -12,16 +12,9 @@
 
 namespace stride::sdk::glue {
 
-instance3* enter3(fmi3Instance i, function3 f, const char* name) {
-  auto* inst = static_cast<instance3*>(i);
-  if (inst == nullptr) return nullptr;
-  if ((inst->state & allowed_states3(f)) == 0) {
-    inst->log.error(std::string(name) + ": illegal call in state " + state_name3(inst->state) +
-                    " (allowed in: " + state_list3(allowed_states3(f)) + ")");
-    return nullptr;
-  }
-  if (inst->log.calls_enabled()) inst->log.info("logCalls", name);
-  return inst;
+void refuse3(instance3& inst, function3 f, const char* name) {
+  inst.log.error(std::string(name) + ": illegal call in state " + state_name3(inst.state) +
+                 " (allowed in: " + state_list3(allowed_states3(f)) + ")");
 }
 
 fmi3Status fail3(instance& inst, const std::string& message) {

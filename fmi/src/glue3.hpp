@@ -20,9 +20,21 @@ struct instance3 : instance {
   fmi3_variables vars;
 };
 
+/// Logs that `name` may not be called in the instance's state (the cold half of enter3).
+void refuse3(instance3& inst, function3 f, const char* name);
+
 /// The instance when `f` may be called in its state; otherwise logs and returns nullptr (the
-/// caller answers fmi3Error, the state is unchanged).
-instance3* enter3(fmi3Instance i, function3 f, const char* name);
+/// caller answers fmi3Error, the state is unchanged). Inline: every call of the API starts here.
+inline instance3* enter3(fmi3Instance i, function3 f, const char* name) {
+  auto* inst = static_cast<instance3*>(i);
+  if (inst == nullptr) return nullptr;
+  if ((inst->state & allowed_states3(f)) == 0) {
+    refuse3(*inst, f, name);
+    return nullptr;
+  }
+  if (inst->log.calls_enabled()) inst->log.info("logCalls", name);
+  return inst;
+}
 
 /// Logs `message` as an error and returns fmi3Error.
 fmi3Status fail3(instance& inst, const std::string& message);
