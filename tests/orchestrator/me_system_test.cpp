@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -117,6 +118,47 @@ TEST_F(me_system_test, a_system_with_a_model_exchange_component_resumes_byte_ide
   }
   EXPECT_EQ(actual, expected);
   EXPECT_NE(expected.front(), expected.back());  // the state moves: the comparison means something
+}
+
+// The ME FMU driven by the gait generator's hip joint angle: over each communication step of h
+// the input is constant, so x' = -x + u has the exact step x <- x e^-h + u (1 - e^-h), where u
+// is the value decay.u is observed with at the end of that step (Jacobi: the inputs a step
+// integrates are set at its start, from the outputs of the step before).
+TEST_F(me_system_test, a_model_exchange_fmu_follows_the_gait_generator) {
+  system_structure s;
+  s.stop = time_from_seconds(2.0);
+  s.base_step = duration_from_seconds(0.008);
+  s.algorithm = algorithm_kind::jacobi;
+  auto& d = s.add_component("decay", decay_.string());
+  model_exchange_options o;
+  o.rtol = 1e-10;
+  o.atol = 1e-12;
+  d.model_exchange = o;
+  auto& g = s.add_component("gait", "gait");
+  g.parameters.push_back({"walking", "true", {}});
+  g.parameters.push_back({"x_move", "10", {}});
+  s.connect("gait.joint_angle[9]", "decay.u");  // a hip pitch joint: it swings while walking
+  auto built = build_system(s);
+  auto& ex = *built.execution;
+  const auto x = observe(ex, "decay", "x");
+  const auto u = observe(ex, "decay", "u");
+  ex.initialize(built.stop);
+  const double h = 0.008;
+  double previous_x = ex.real_value(x);
+  double lowest_u = ex.real_value(u), highest_u = lowest_u;
+  int steps = 0;
+  while (ex.current_time() < built.stop) {
+    ex.step();
+    const double now_u = ex.real_value(u);
+    const double expected = previous_x * std::exp(-h) + now_u * -std::expm1(-h);
+    ASSERT_NEAR(ex.real_value(x), expected, 1e-9) << "step " << steps;
+    previous_x = ex.real_value(x);
+    lowest_u = std::min(lowest_u, now_u);
+    highest_u = std::max(highest_u, now_u);
+    ++steps;
+  }
+  EXPECT_EQ(steps, 250);
+  EXPECT_GT(highest_u - lowest_u, 0.05) << "the hip did not move: the test would mean nothing";
 }
 
 }  // namespace
