@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -302,7 +303,7 @@ TEST_F(me_component_test, an_fmu_refusing_its_equations_stops_the_run_naming_the
   auto f = load("decay", STRIDE_ME_DECAY);
   auto c = make(*f, "decay", cvode(1e-6));
   variable_refs fail_after;
-  fail_after.reals = {15};
+  fail_after.reals = {31};
   value_block quarter;
   quarter.reals = {0.25};
   c->set_values(fail_after, quarter);
@@ -418,7 +419,7 @@ TEST_F(me_component_test, fmu_log_messages_reach_the_sink_with_their_level) {
   EXPECT_EQ(got[0], std::make_tuple(log_level::info, std::string("logged"),
                                     std::string("instantiated with 1 continuous states")));
   variable_refs fail_after;
-  fail_after.reals = {15};
+  fail_after.reals = {31};
   value_block soon;
   soon.reals = {0.05};
   c->set_values(fail_after, soon);
@@ -448,7 +449,7 @@ TEST_F(me_component_test, an_event_iteration_that_never_settles_is_stopped) {
   auto f = load("decay", STRIDE_ME_DECAY);
   auto c = make(*f, "decay", cvode(1e-6));
   variable_refs chatter;
-  chatter.reals = {14};
+  chatter.reals = {30};
   value_block on;
   on.reals = {1.0};
   c->set_values(chatter, on);
@@ -540,6 +541,36 @@ TEST_F(me_component_test, a_foreign_or_truncated_image_is_refused) {
   auto image = c->save_state();
   image.resize(image.size() / 2);
   EXPECT_THROW(c->restore_state(image), validation_error);
+}
+
+// the ten-state chain: every state follows t^i e^-t / i! within the tolerance, by Model Exchange
+// (CVODE) and by its Co-Simulation twin (the same library's RK4 at 1 ms), one FMU offering both
+std::vector<double> chain_at_one_second(fmu& f, std::optional<model_exchange_options> me) {
+  instance_options io;
+  io.model_exchange = me;
+  auto c = f.instantiate("chain", io);
+  initialise(*c, 1.0);
+  variable_refs x;
+  for (std::uint32_t i = 0; i < 10; ++i) x.reals.push_back(i);
+  return advance(*c, x, 0.0, 0.1, 10).outputs.back().reals;
+}
+
+TEST_F(me_component_test, a_ten_state_chain_follows_its_closed_form_in_both_kinds) {
+  auto f =
+      load("chain", STRIDE_ME_CHAIN,
+           {"<ModelExchange", "<CoSimulation modelIdentifier=\"me_chain\"/>\n  <ModelExchange"});
+  const auto by_cvode = chain_at_one_second(*f, cvode(1e-8));
+  const auto by_rk4 = chain_at_one_second(*f, std::nullopt);  // both offered: Co-Simulation
+  ASSERT_EQ(by_cvode.size(), 10u);
+  ASSERT_EQ(by_rk4.size(), 10u);
+  double factorial = 1;
+  for (int i = 0; i < 10; ++i) {
+    if (i > 0) factorial *= i;
+    const double exact = std::exp(-1.0) / factorial;  // t = 1
+    EXPECT_NEAR(by_cvode[i], exact, 1e-7) << "x" << i;
+    EXPECT_NEAR(by_rk4[i], exact, 1e-10) << "x" << i;
+  }
+  EXPECT_NE(by_cvode, by_rk4);  // two different integrators did the work
 }
 
 }  // namespace

@@ -1,23 +1,13 @@
-/* The FMI 2.0 Model Exchange interface around one me_model.h model (test FMUs only). */
+/* The FMI 2.0 Model Exchange interface around one me_model.h model (test FMUs only); me_cs.c
+ * adds the Co-Simulation functions. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "me_model.h"
+#include "me_instance.h"
 
-typedef struct {
-  me_data m;
-  const fmi2CallbackFunctions* cb; /* FMI 2.0: the importer keeps it alive */
-  int logging;
-  char name[ME_STRING_SIZE];
-} instance;
-
-#define CHATTER (ME_MAX_REALS - 2)
-#define FAIL_AFTER (ME_MAX_REALS - 1)
-
-static void say(const instance* s, fmi2Status status, const char* category, const char* format,
-                ...) {
+void say(const instance* s, fmi2Status status, const char* category, const char* format, ...) {
   if (!s->logging || s->cb == NULL || s->cb->logger == NULL) return;
   char text[256];
   va_list args;
@@ -53,10 +43,11 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, f
                               fmi2Boolean logging) {
   (void)uri;
   (void)visible;
-  if (type != fmi2ModelExchange || guid == NULL || strcmp(guid, me_guid) != 0) return NULL;
+  if (guid == NULL || strcmp(guid, me_guid) != 0) return NULL;
   instance* s = calloc(1, sizeof *s);
   if (s == NULL) return NULL;
   s->cb = cb;
+  s->type = type;
   s->logging = logging == fmi2True;
   strncpy(s->name, name ? name : "", sizeof s->name - 1);
   s->m.next_event = -1;
@@ -217,7 +208,7 @@ fmi2Status fmi2EnterEventMode(fmi2Component c) {
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo* info) {
   instance* s = c;
   const int changed = me_event(&s->m);
-  info->newDiscreteStatesNeeded = s->m.r[CHATTER] > 0 ? fmi2True : fmi2False;
+  info->newDiscreteStatesNeeded = s->m.r[ME_CHATTER] > 0 ? fmi2True : fmi2False;
   info->terminateSimulation = s->m.terminate ? fmi2True : fmi2False;
   info->nominalsOfContinuousStatesChanged = fmi2False;
   info->valuesOfContinuousStatesChanged = changed ? fmi2True : fmi2False;
@@ -255,7 +246,7 @@ fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t n) {
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real dx[], size_t n) {
   instance* s = c;
   if ((int)n != me_state_count) return fmi2Error;
-  if (s->m.r[FAIL_AFTER] > 0 && s->m.time > s->m.r[FAIL_AFTER]) {
+  if (s->m.r[ME_FAIL_AFTER] > 0 && s->m.time > s->m.r[ME_FAIL_AFTER]) {
     say(s, fmi2Discard, "logStatusDiscard", "equations refused at t = %g", s->m.time);
     return fmi2Discard;
   }
