@@ -160,5 +160,19 @@ TEST_F(export_cli, the_walk_exported_walks_as_walk_xml) {
 }
 #endif
 
+#ifdef STRIDE_HAVE_LEARNER_FMU
+TEST_F(export_cli, the_evaluated_gait_point_exported_measures_as_its_system_xml) {
+  // three FMUs, values of every type, a String value with the ${output_dir} placeholder
+  const fs::path point = k_models / "experiments" / "evaluate-point.xml";
+  const std::string reference = results(point, "xml", "--stop-time 1");
+  exported(quoted(point) + " --ssp evaluate-point.ssp -q");
+  EXPECT_EQ(results(scratch.path() / "evaluate-point.ssp", "ssp", "--stop-time 1"), reference);
+  // the learner wrote its files into the run's own folder in both runs
+  const std::string paths = read_file(scratch.path() / "xml" / "paths.csv");
+  EXPECT_FALSE(paths.empty());
+  EXPECT_EQ(read_file(scratch.path() / "ssp" / "paths.csv"), paths);
+}
+#endif
+
 }  // namespace
 }  // namespace stride::cosim
