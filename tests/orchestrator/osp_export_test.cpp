@@ -97,6 +97,12 @@ TEST_F(osp_export, a_folder_that_is_not_empty_is_written_into_only_when_asked) {
   } catch (const validation_error& e) {
     EXPECT_THAT(e.what(), HasSubstr("notes.txt: exists and is not a folder"));
   }
+  try {
+    export_osp(system_xml(osp_system()), folder / "notes.txt" / "below", options);
+    ADD_FAILURE() << "written";
+  } catch (const validation_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("notes.txt/below: cannot create the folder"));
+  }
 }
 
 TEST_F(osp_export, what_osp_cannot_say_is_refused_naming_it) {

@@ -138,12 +138,22 @@ TEST_F(ssp_export, an_existing_archive_is_replaced_only_when_asked) {
   options.overwrite = true;
   export_ssp(system_xml(), archive, options);
   EXPECT_EQ(summary(load_system_file(archive)), k_read_back);
-  try {
-    export_ssp(system_xml(), scratch.path() / "pair.zip", options);
-    ADD_FAILURE() << "exported";
-  } catch (const validation_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("pair.zip: an SSP archive's name ends in .ssp"));
-  }
+  const auto refused = [&](const fs::path& target) {
+    try {
+      export_ssp(system_xml(), target, options);
+      ADD_FAILURE() << "exported";
+    } catch (const validation_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_THAT(refused(scratch.path() / "pair.zip"),
+              HasSubstr("pair.zip: an SSP archive's name ends in .ssp"));
+  fs::create_directory(scratch.path() / "folder.ssp");
+  EXPECT_THAT(refused(scratch.path() / "folder.ssp"),
+              HasSubstr("folder.ssp: exists and is not a file"));
+  EXPECT_THAT(refused(scratch.path() / "missing" / "pair.ssp"),
+              HasSubstr("missing/pair.ssp: cannot write the archive"));
 }
 
 // the system XML with `extra` on a line of its own before `before`
@@ -222,6 +232,8 @@ TEST_F(ssp_export, connections_other_than_output_to_input_or_parameter_are_refus
                         "parameter"));
   EXPECT_THAT(refused("c.y", "b.u"), HasSubstr("connection c.y -> b.u: 'c.y' names no component"));
   EXPECT_THAT(refused("a.vec_out[*]", "b.vec_in[1:2]"), HasSubstr("3 sources for 2 targets"));
+  EXPECT_THAT(refused("a.y", "b.w"),
+              HasSubstr("cannot export to SSP: connection a.y -> b.w: 'b.w': no variable 'w'"));
   system_structure s = in_code();
   s.connect("a.y", "b.u");
   s.connect("a.integral", "b.u");
