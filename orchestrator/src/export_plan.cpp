@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <map>
 #include <stdexcept>
 #include <tuple>
 
@@ -40,9 +39,11 @@ export_plan::export_plan(const system_structure& system, const std::vector<fs::p
 void export_plan::check_system() const {
   const system_structure& s = system_;
   if (!s.groups.empty()) {
-    refuse_export(format_, s.groups.front().where,
-                  "replica group '" + s.groups.front().name +
-                      "': the copies' names (\"gait[1]\") are not valid element names");
+    const replica_group& g = s.groups.front();
+    const std::string copy = g.components.empty() ? g.name : g.components.front().name;
+    refuse_export(format_, g.where,
+                  "replica group '" + g.name + "': the copies' names (\"" + copy +
+                      "[1]\") are not valid element names");
   }
   if (s.agents.count > 0) {
     refuse_export(format_, s.agents.where,
@@ -50,7 +51,9 @@ void export_plan::check_system() const {
                   "--agents)");
   }
   const record_spec& r = s.record;
-  const std::string run_option = " (give it to stride run instead: --record, --record-interval)";
+  const std::string run_option =
+      " (SSP and OSP say nothing of recording; give it to stride run: --record, "
+      "--record-interval)";
   if (!r.enabled) refuse_export(format_, r.where, "recording is switched off" + run_option);
   if (!r.signals.empty()) {
     const source_location at = r.signal_locations.empty() ? r.where : r.signal_locations.front();
@@ -63,9 +66,7 @@ void export_plan::check_system() const {
   }
   if (r.file != "results.csv") {
     refuse_export(format_, r.where,
-                  "the results file \"" + r.file +
-                      "\" (the importers record "
-                      "into results.csv)");
+                  "the results file \"" + r.file + "\" (the importers record into results.csv)");
   }
 }
 

@@ -123,9 +123,9 @@ TEST_F(export_cli, exporting_the_export_gives_the_same_archive) {
 
 TEST_F(export_cli, refusals_and_usage_errors_say_what_is_wrong) {
   const fs::path walkers = k_models / "walkers.xml";
-  refused(
-      "export " + quoted(walkers) + " --ssp walkers.ssp",
-      "stride: error: " + walkers.string() + ":11: cannot export to SSP: replica group 'walker'");
+  refused("export " + quoted(walkers) + " --ssp walkers.ssp",
+          "stride: error: " + walkers.string() +
+              ":11: cannot export to SSP: replica group 'walker': the copies' names (\"gait[1]\")");
   EXPECT_FALSE(fs::exists(scratch.path() / "walkers.ssp"));
   write("loop.xml", k_loop);
   refused("export loop.xml --osp loop-osp", "cannot export to OSP: the jacobi algorithm");

@@ -165,13 +165,15 @@ std::string with(const std::string& extra, const std::string& before = "</system
 
 TEST_F(ssp_export, what_the_system_xml_says_beyond_ssp_is_refused_naming_file_and_line) {
   const std::string file = (scratch.path() / "pair.xml").string();
-  EXPECT_THAT(refusal(system_xml(with(R"(<replicate name="w" count="2">
+  EXPECT_THAT(
+      refusal(system_xml(with(R"(<replicate name="w" count="2">
   <component name="c" fmu="fmus/stride_test.fmu"/></replicate>)",
-                                      "  <connection"))),
-              HasSubstr(file + ":11: cannot export to SSP: replica group 'w': the copies' names"));
+                              "  <connection"))),
+      HasSubstr(file +
+                ":11: cannot export to SSP: replica group 'w': the copies' names (\"c[1]\")"));
   EXPECT_THAT(refusal(system_xml(with(R"(<record><signal name="a.y"/></record>)"))),
-              HasSubstr(file + ":15: cannot export to SSP: the recorded signals (a.y) (give it to "
-                               "stride run instead"));
+              HasSubstr(file + ":15: cannot export to SSP: the recorded signals (a.y) (SSP and OSP "
+                               "say nothing of recording"));
   EXPECT_THAT(refusal(system_xml(with(R"(<record interval="0.02"/>)"))),
               HasSubstr(file + ":15: cannot export to SSP: the recording interval 0.02 s is not "
                                "the base step"));
