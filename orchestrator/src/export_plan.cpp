@@ -5,7 +5,6 @@
 #include "export_plan.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <stdexcept>
 #include <tuple>
@@ -226,7 +225,11 @@ std::string uri_path(std::string_view text) {
   std::string out;
   for (const char ch : text) {
     const auto u = static_cast<unsigned char>(ch);
-    if (std::isalnum(u) != 0 || ch == '-' || ch == '.' || ch == '_' || ch == '~' || ch == '/') {
+    // RFC 3986's unreserved characters, ASCII whatever the locale
+    const bool plain = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+                       (ch >= '0' && ch <= '9') || ch == '-' || ch == '.' || ch == '_' ||
+                       ch == '~' || ch == '/';
+    if (plain) {
       out += ch;
     } else {
       char escaped[4];

@@ -126,6 +126,27 @@ TEST_F(ssp_export, a_variable_given_twice_keeps_its_first_place_and_last_value) 
             "component a stride_test.fmu x1 gain=2 offset=0.25");
 }
 
+TEST_F(ssp_export, fmu_files_keep_their_names_percent_encoded_and_apart) {
+  // a blank in a name, and two different files of one name
+  fs::copy_file(scratch.path() / "fmus" / "stride_test.fmu", scratch.path() / "my model.fmu");
+  test::write_fake_fmu(scratch.path() / "other" / "stride_test.fmu",
+                       {{"y", "output", "Real", ""}, {"u", "input", "Real", ""}});
+  system_structure s = in_code();
+  s.add_component("c", "my model.fmu");
+  s.add_component("d", "other/stride_test.fmu");
+  const fs::path archive = scratch.path() / "names.ssp";
+  EXPECT_THAT(export_ssp(s, archive, options).files,
+              ElementsAre("SystemStructure.ssd", "resources/my model.fmu",
+                          "resources/stride_test-2.fmu", "resources/stride_test.fmu"));
+  const std::string ssd = entries(archive)["SystemStructure.ssd"];
+  EXPECT_THAT(ssd, HasSubstr(R"(<ssd:Component name="c" source="resources/my%20model.fmu"/>)"));
+  EXPECT_THAT(ssd, HasSubstr(R"(<ssd:Component name="d" source="resources/stride_test-2.fmu"/>)"));
+  const system_structure back = load_system_file(archive);
+  EXPECT_EQ(fs::path(back.components.at(2).fmu).filename(), "my model.fmu");
+  EXPECT_EQ(fs::path(back.components.at(3).fmu).filename(), "stride_test-2.fmu");
+  EXPECT_EQ(fs::path(back.components.at(0).fmu).filename(), "stride_test.fmu");
+}
+
 TEST_F(ssp_export, an_existing_archive_is_replaced_only_when_asked) {
   const fs::path archive = write("pair.ssp", "not yet an archive");
   try {
