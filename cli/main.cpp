@@ -8,6 +8,7 @@
 
 #include "calibrate.hpp"
 #include "commands.hpp"
+#include "export.hpp"
 #include "installed_files.hpp"
 #include "plot.hpp"
 #include "robot_fmu.hpp"
@@ -171,6 +172,9 @@ int main(int argc, char** argv) {
   stride::cli::view_arguments view_args;
   auto* view = stride::cli::add_view_command(app, view_args);
 
+  stride::cli::export_arguments export_args;
+  auto* export_command = stride::cli::add_export_command(app, export_args);
+
   stride::cli::robot_fmu_arguments robot_fmu_args;
   auto* robot_fmu = stride::cli::add_robot_fmu_command(app, robot_fmu_args);
 
@@ -229,6 +233,7 @@ int main(int argc, char** argv) {
     }
     if (*view) return stride::cli::view(view_args);
     if (*robot_fmu) return stride::cli::robot_fmu(robot_fmu_args);
+    if (*export_command) return stride::cli::export_system(export_args);
     if (*validate) {
       validate_args.file = validate_file;
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;
