@@ -39,25 +39,30 @@ std::shared_ptr<fmu> shared_import(const fs::path& file, const fmu_import_option
 }  // namespace
 
 std::optional<model_exchange_options> model_exchange_choice(const component_spec& spec,
-                                                            const fmu& f) {
-  const auto& md = f.model_description();
+                                                            const model_description& md,
+                                                            const fs::path& file) {
   if (spec.kind == "co-simulation" && !md.co_simulation) {
-    throw fmu_import_error("kind=\"co-simulation\", but " + f.file().string() +
+    throw fmu_import_error("kind=\"co-simulation\", but " + file.string() +
                            " offers only Model Exchange");
   }
   if (spec.kind.empty() && spec.model_exchange && md.co_simulation) {
-    throw fmu_import_error(f.file().string() +
+    throw fmu_import_error(file.string() +
                            " offers Co-Simulation, which is used unless kind=\"model-exchange\"; "
                            "solver settings need that kind");
   }
   if (spec.kind == "model-exchange" && !md.model_exchange) {
-    throw fmu_import_error("kind=\"model-exchange\", but " + f.file().string() +
+    throw fmu_import_error("kind=\"model-exchange\", but " + file.string() +
                            " has no <ModelExchange> interface");
   }
   if (spec.kind == "model-exchange" || !md.co_simulation) {
     return spec.model_exchange.value_or(model_exchange_options{});
   }
   return std::nullopt;
+}
+
+std::optional<model_exchange_options> model_exchange_choice(const component_spec& spec,
+                                                            const fmu& f) {
+  return model_exchange_choice(spec, f.model_description(), f.file());
 }
 
 std::unique_ptr<component> in_process_placement::create(const component_spec& spec,

@@ -1,5 +1,8 @@
 #include "remote_component.hpp"
 
+#include "me_wire.hpp"
+#include "protocol.hpp"
+
 #include "stride/cosim/error.hpp"
 
 namespace stride::remote {
@@ -7,7 +10,8 @@ namespace stride::remote {
 remote_component::remote_component(std::shared_ptr<client> link, std::string worker,
                                    std::string name, std::string hash,
                                    cosim::model_description description, cosim::log_sink log,
-                                   bool debug_logging)
+                                   bool debug_logging,
+                                   const std::optional<cosim::model_exchange_options>& model_exchange)
     : link_(std::move(link)),
       worker_(std::move(worker)),
       name_(std::move(name)),
@@ -17,6 +21,9 @@ remote_component::remote_component(std::shared_ptr<client> link, std::string wor
   stride_remote_request r = request(op::instantiate);
   r.text = hash.data();
   r.logging = debug_logging;
+  const cosim::value_block settings = model_exchange_to_wire(model_exchange);
+  wire_storage storage;
+  put_values(settings, r.data, storage);
   call(r);
 }
 

@@ -4,21 +4,25 @@
 #define STRIDE_REMOTE_REMOTE_COMPONENT_HPP
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "client.hpp"
 #include "stride/cosim/component.hpp"
 #include "stride/cosim/log.hpp"
+#include "stride/cosim/model_exchange.hpp"
 
 namespace stride::remote {
 
 class remote_component final : public cosim::component {
  public:
-  /// Instantiates `name` on `worker` from the FMU with `hash`, which the worker has loaded.
-  /// Messages the instance logs go to `log` (default: stderr) with its name as the source.
+  /// Instantiates `name` on `worker` from the FMU with `hash`, which the worker has loaded, as
+  /// Model Exchange with `model_exchange` when set, else as Co-Simulation. Messages the
+  /// instance logs go to `log` (default: stderr) with its name as the source.
   remote_component(std::shared_ptr<client> link, std::string worker, std::string name,
                    std::string hash, cosim::model_description description, cosim::log_sink log,
-                   bool debug_logging);
+                   bool debug_logging,
+                   const std::optional<cosim::model_exchange_options>& model_exchange);
 
   const std::string& name() const noexcept override { return name_; }
   const std::string& worker() const noexcept { return worker_; }

@@ -50,21 +50,17 @@ std::unique_ptr<cosim::component> remote_placement::create(
   if (spec.worker.empty()) return nullptr;
   const std::string where = (spec.where.str().empty() ? std::string() : spec.where.str() + ": ") +
                             "component '" + spec.name + "' on worker '" + spec.worker + "': ";
-  // a worker runs a Model Exchange-only FMU with the default integrator; the settings do not
-  // travel yet, and silently running Co-Simulation instead would be wrong
-  if (spec.kind == "model-exchange" || spec.model_exchange) {
-    throw cosim::fmu_import_error(where +
-                                  "kind and solver settings are not supported on workers yet; "
-                                  "run the component in this process");
-  }
   const fs::path file = cosim::resolve_fmu(spec, *context.system, context.fmu_search_path);
   std::vector<std::byte> archive;
   cosim::model_description description;
   std::string hash;
+  std::optional<cosim::model_exchange_options> model_exchange;
   try {
     archive = read_bytes(file, context.import.limits.max_total_size);
     hash = content_hash(archive);
     description = describe(file, context.import);
+    // the kind and the integrator settings travel with the instantiate request
+    model_exchange = cosim::model_exchange_choice(spec, description, file);
   } catch (const cosim::error& e) {
     throw cosim::fmu_import_error(where + e.what());
   }
@@ -90,7 +86,7 @@ std::unique_ptr<cosim::component> remote_placement::create(
     }
     auto c = std::make_unique<remote_component>(link_, spec.worker, spec.name, hash,
                                                 std::move(description), context.log,
-                                                context.fmu_debug_logging);
+                                                context.fmu_debug_logging, model_exchange);
     files_[spec.name] = fs::absolute(file);
     return c;
   } catch (const cosim::error&) {

@@ -13,6 +13,7 @@
 
 #include "dds.hpp"
 #include "hosted.hpp"
+#include "me_wire.hpp"
 #include "protocol.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/archive.hpp"
@@ -310,6 +311,9 @@ class host {
         }
         cosim::instance_options io;
         io.logging_on = r.logging;
+        cosim::value_block settings;
+        copy_values(r.data, settings);
+        io.model_exchange = model_exchange_from_wire(settings);
         // what the component logs goes back with the reply of the request being served
         io.log = [this](cosim::log_level level, std::string_view source, std::string_view category,
                         std::string_view message) {

@@ -64,6 +64,11 @@ class function_placement final : public placement_resolver {
 /// \throws fmu_import_error when the kind or the solver settings do not fit the FMU.
 std::optional<model_exchange_options> model_exchange_choice(const component_spec& spec,
                                                             const fmu& f);
+/// The same from the FMU's model description alone (`file` names it in messages): for an FMU
+/// that runs elsewhere, e.g. on a worker.
+std::optional<model_exchange_options> model_exchange_choice(const component_spec& spec,
+                                                            const model_description& md,
+                                                            const std::filesystem::path& file);
 
 /// Components without a `worker`: the FMU is imported into this process (each file once,
 /// however many instances use it) and instantiated.
