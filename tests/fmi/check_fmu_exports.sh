@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # check_fmu_exports.sh FILE.fmu [2|3]
 #
-# Shared-library hygiene of an FMI 2.0 (default) or FMI 3.0 Co-Simulation FMU
+# Shared-library hygiene of an FMI 2.0 (default) or FMI 3.0 FMU
 # (docs/fmi-rules.md §2.1, §2.3; docs/fmi3-rules.md §1, §6):
 #  - binaries/linux64/<modelIdentifier>.so (3.0: binaries/x86_64-linux/) exports ONLY fmi2*
-#    (fmi3*) symbols (nm -D --defined-only), and all 34 Co-Simulation functions (3.0: all 75
-#    functions, whatever the interface types) are among them, as functions;
+#    (fmi3*) symbols (nm -D --defined-only), and the functions of its interface types are among
+#    them, as functions: for 2.0 the 25 common ones plus the 9 of Co-Simulation and/or the 10 of
+#    Model Exchange (one binary per distinct modelIdentifier of <CoSimulation> and
+#    <ModelExchange>, each with the functions of the elements naming it); for 3.0 all 75
+#    functions, whatever the interface types, of CoSimulation@modelIdentifier;
 #  - every .so in that folder needs (readelf -d NEEDED) only libc, libm, libpthread, libdl,
 #    librt, ld-linux-x86-64, or libraries shipped in the same folder of the FMU.
 # Unpacks with `unzip` when present, else with `cmake -E tar` ($CMAKE_COMMAND or cmake).
@@ -43,46 +46,25 @@ errors=0
 error() { echo "$fmu: error: $*"; errors=$((errors + 1)); }
 
 [[ -f $work/modelDescription.xml ]] || { error "[exports.archive] no modelDescription.xml"; exit 1; }
-# modelIdentifier of <CoSimulation>, by plain text matching (attributes may span lines)
-model_identifier=$(tr '\n\r\t' '   ' < "$work/modelDescription.xml" |
-  grep -o '<CoSimulation[^>]*>' | head -n 1 |
-  sed -n 's/.*[[:space:]]modelIdentifier[[:space:]]*=[[:space:]]*["'"'"']\([^"'"'"']*\)["'"'"'].*/\1/p')
-[[ -n $model_identifier ]] || { error "[exports.archive] no CoSimulation@modelIdentifier"; exit 1; }
+# the modelIdentifier of an interface element, by plain text matching (attributes may span lines)
+model_identifier_of() {
+  tr '\n\r\t' '   ' < "$work/modelDescription.xml" |
+    grep -o "<$1[[:space:]/>][^>]*>" | head -n 1 |
+    sed -n 's/.*[[:space:]]modelIdentifier[[:space:]]*=[[:space:]]*["'"'"']\([^"'"'"']*\)["'"'"'].*/\1/p' ||
+    true
+}
 
-bin_dir=$work/binaries/$platform
-so=$bin_dir/$model_identifier.so
-[[ -f $so ]] || { error "[exports.archive] no binaries/$platform/$model_identifier.so"; exit 1; }
-
-# --- exported symbols of the FMU library
-symbols=$(nm -D --defined-only "$so" | awk 'NF >= 3 { print $2, $3 }') ||
-  { error "[exports.nm] nm -D failed on $model_identifier.so"; exit 1; }
-extra=()
-declare -A exported=()
-while read -r type name; do
-  [[ -n ${name:-} ]] || continue
-  name=${name%%@*}
-  case $name in
-    "$prefix"*) exported[$name]=$type ;;
-    *) extra+=("$name ($type)") ;;
-  esac
-done <<< "$symbols"
-if ((${#extra[@]} > 0)); then
-  shown=$(printf '%s, ' "${extra[@]:0:20}")
-  more=""
-  ((${#extra[@]} > 20)) && more=" and $((${#extra[@]} - 20)) more"
-  error "[exports.symbols] $model_identifier.so exports ${#extra[@]} non-$prefix symbol(s): ${shown%, }$more" \
-    "(build with -fvisibility=hidden and a version script { global: $prefix*; local: *; };" \
-    "with -static-libstdc++ also -Wl,--exclude-libs,ALL)"
-fi
-
-functions2=(fmi2GetTypesPlatform fmi2GetVersion fmi2SetDebugLogging fmi2Instantiate
+functions_common=(fmi2GetTypesPlatform fmi2GetVersion fmi2SetDebugLogging fmi2Instantiate
   fmi2FreeInstance fmi2SetupExperiment fmi2EnterInitializationMode fmi2ExitInitializationMode
   fmi2Terminate fmi2Reset fmi2GetReal fmi2GetInteger fmi2GetBoolean fmi2GetString fmi2SetReal
   fmi2SetInteger fmi2SetBoolean fmi2SetString fmi2GetFMUstate fmi2SetFMUstate fmi2FreeFMUstate
   fmi2SerializedFMUstateSize fmi2SerializeFMUstate fmi2DeSerializeFMUstate
-  fmi2GetDirectionalDerivative fmi2SetRealInputDerivatives fmi2GetRealOutputDerivatives
-  fmi2DoStep fmi2CancelStep fmi2GetStatus fmi2GetRealStatus fmi2GetIntegerStatus
-  fmi2GetBooleanStatus fmi2GetStringStatus)
+  fmi2GetDirectionalDerivative)
+functions_cs=(fmi2SetRealInputDerivatives fmi2GetRealOutputDerivatives fmi2DoStep fmi2CancelStep
+  fmi2GetStatus fmi2GetRealStatus fmi2GetIntegerStatus fmi2GetBooleanStatus fmi2GetStringStatus)
+functions_me=(fmi2EnterEventMode fmi2NewDiscreteStates fmi2EnterContinuousTimeMode
+  fmi2CompletedIntegratorStep fmi2SetTime fmi2SetContinuousStates fmi2GetDerivatives
+  fmi2GetEventIndicators fmi2GetContinuousStates fmi2GetNominalsOfContinuousStates)
 # every FMI 3.0 function, also those of Model Exchange and Scheduled Execution
 functions3=(fmi3GetVersion fmi3SetDebugLogging fmi3InstantiateModelExchange
   fmi3InstantiateCoSimulation fmi3InstantiateScheduledExecution fmi3FreeInstance
@@ -103,25 +85,77 @@ functions3=(fmi3GetVersion fmi3SetDebugLogging fmi3InstantiateModelExchange
   fmi3GetNominalsOfContinuousStates fmi3GetNumberOfEventIndicators
   fmi3GetNumberOfContinuousStates fmi3EnterStepMode fmi3GetOutputDerivatives fmi3DoStep
   fmi3ActivateModelPartition)
-if ((version == 3)); then
-  functions=("${functions3[@]}")
-  what="FMI 3.0 functions"
-else
-  functions=("${functions2[@]}")
-  what="FMI 2.0 Co-Simulation functions"
-fi
-missing=()
-for f in "${functions[@]}"; do
-  if [[ -z ${exported[$f]:-} ]]; then
-    missing+=("$f")
-  elif [[ ${exported[$f]} != [TtWi] ]]; then
-    error "[exports.functions] $f is exported as nm type ${exported[$f]}, not as a function"
+
+# the binaries to check: model identifier -> the interface types whose functions it must export
+cs_identifier=$(model_identifier_of CoSimulation)
+me_identifier=""
+((version == 3)) || me_identifier=$(model_identifier_of ModelExchange)
+[[ -n $cs_identifier || -n $me_identifier ]] ||
+  { error "[exports.archive] no CoSimulation@modelIdentifier or ModelExchange@modelIdentifier"; exit 1; }
+declare -A interfaces=()
+[[ -z $cs_identifier ]] || interfaces[$cs_identifier]="cs"
+[[ -z $me_identifier ]] || interfaces[$me_identifier]="${interfaces[$me_identifier]:-} me"
+
+bin_dir=$work/binaries/$platform
+checked=()
+for model_identifier in $(printf '%s\n' "${!interfaces[@]}" | sort); do
+  so=$bin_dir/$model_identifier.so
+  [[ -f $so ]] || { error "[exports.archive] no binaries/$platform/$model_identifier.so"; continue; }
+
+  # --- exported symbols of the FMU library
+  symbols=$(nm -D --defined-only "$so" | awk 'NF >= 3 { print $2, $3 }') ||
+    { error "[exports.nm] nm -D failed on $model_identifier.so"; continue; }
+  extra=()
+  declare -A exported=()
+  while read -r type name; do
+    [[ -n ${name:-} ]] || continue
+    name=${name%%@*}
+    case $name in
+      "$prefix"*) exported[$name]=$type ;;
+      *) extra+=("$name ($type)") ;;
+    esac
+  done <<< "$symbols"
+  if ((${#extra[@]} > 0)); then
+    shown=$(printf '%s, ' "${extra[@]:0:20}")
+    more=""
+    ((${#extra[@]} > 20)) && more=" and $((${#extra[@]} - 20)) more"
+    error "[exports.symbols] $model_identifier.so exports ${#extra[@]} non-$prefix symbol(s): ${shown%, }$more" \
+      "(build with -fvisibility=hidden and a version script { global: $prefix*; local: *; };" \
+      "with -static-libstdc++ also -Wl,--exclude-libs,ALL)"
   fi
+
+  if ((version == 3)); then
+    functions=("${functions3[@]}")
+    what="FMI 3.0 functions"
+  else
+    functions=("${functions_common[@]}")
+    kinds=()
+    if [[ ${interfaces[$model_identifier]} == *cs* ]]; then
+      functions+=("${functions_cs[@]}")
+      kinds+=("Co-Simulation")
+    fi
+    if [[ ${interfaces[$model_identifier]} == *me* ]]; then
+      functions+=("${functions_me[@]}")
+      kinds+=("Model Exchange")
+    fi
+    what="FMI 2.0 $(IFS=+; echo "${kinds[*]}") functions"
+    what=${what//+/ + }
+  fi
+  missing=()
+  for f in "${functions[@]}"; do
+    if [[ -z ${exported[$f]:-} ]]; then
+      missing+=("$f")
+    elif [[ ${exported[$f]} != [TtWi] ]]; then
+      error "[exports.functions] $f is exported as nm type ${exported[$f]}, not as a function"
+    fi
+  done
+  if ((${#missing[@]} > 0)); then
+    error "[exports.functions] $model_identifier.so does not export ${#missing[@]} of the" \
+      "${#functions[@]} $what: ${missing[*]}"
+  fi
+  unset exported
+  checked+=("$model_identifier.so exports the ${#functions[@]} $what")
 done
-if ((${#missing[@]} > 0)); then
-  error "[exports.functions] $model_identifier.so does not export ${#missing[@]} of the" \
-    "${#functions[@]} $what: ${missing[*]}"
-fi
 
 # --- NEEDED libraries of every shared library in binaries/<platform>/
 allowed_re='^(libc\.so\.6|libm\.so\.6|libpthread\.so\.0|libdl\.so\.2|librt\.so\.1|ld-linux-x86-64\.so\.2)$'
@@ -151,5 +185,4 @@ done
 if ((errors > 0)); then
   exit 1
 fi
-echo "$fmu: ok: $model_identifier.so exports the ${#functions[@]} $prefix functions only; NEEDED" \
-  "libraries allowed"
+echo "$fmu: ok: $(printf '%s; ' "${checked[@]}")only $prefix symbols; NEEDED libraries allowed"

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -294,7 +295,7 @@ std::vector<finding> check_fmu(const std::filesystem::path& fmu) {
 namespace detail {
 
 void check_binary_layout(reporter& out, const archive_listing& archive,
-                         std::string_view model_identifier, const binary_layout& layout) {
+                         std::span<const binary_name> binaries, const binary_layout& layout) {
   const std::string prefix(layout.rule_prefix);
   std::set<std::string, std::less<>> reported;
   for (const std::string& entry : archive) {
@@ -311,10 +312,17 @@ void check_binary_layout(reporter& out, const archive_listing& archive,
                     std::string(it->second) + "/");
     }
   }
-  if (model_identifier.empty()) return;
-  const std::string binary =
-      "binaries/" + std::string(layout.platform_dir) + "/" + std::string(model_identifier) + ".so";
-  if (std::find(archive.begin(), archive.end(), binary) == archive.end()) {
+  // interface elements sharing a modelIdentifier share one binary
+  std::map<std::string_view, std::string> named_by;
+  for (const binary_name& b : binaries) {
+    if (b.model_identifier.empty()) continue;
+    std::string& elements = named_by[b.model_identifier];
+    elements += (elements.empty() ? "" : " and ") + std::string(b.element) + "@modelIdentifier";
+  }
+  for (const auto& [model_identifier, elements] : named_by) {
+    const std::string binary = "binaries/" + std::string(layout.platform_dir) + "/" +
+                               std::string(model_identifier) + ".so";
+    if (std::find(archive.begin(), archive.end(), binary) != archive.end()) continue;
     std::string hint;
     for (const std::string& entry : archive) {
       if (entry.starts_with("binaries/") && entry.ends_with(".so")) {
@@ -322,13 +330,13 @@ void check_binary_layout(reporter& out, const archive_listing& archive,
       }
     }
     if (!hint.empty()) hint += ")";
-    out.error(prefix + "archive.binary", "the archive has no " + binary +
-                                             " (named after CoSimulation@modelIdentifier)" + hint);
+    out.error(prefix + "archive.binary",
+              "the archive has no " + binary + " (named after " + elements + ")" + hint);
   }
 }
 
 void check_archive_ties(reporter& out, const archive_listing& archive,
-                        std::string_view model_identifier) {
+                        std::string_view model_identifier, std::string_view me_model_identifier) {
   // FMI 3 platform tuples for platforms that have an FMI 2 name are not searched by FMI 2 tools
   static const std::map<std::string_view, std::string_view> k_fmi3_tuples = {
       {"x86_64-linux", "linux64"},
@@ -336,7 +344,9 @@ void check_archive_ties(reporter& out, const archive_listing& archive,
       {"x86_64-windows", "win64"},
       {"x86-windows", "win32"},
       {"x86_64-darwin", "darwin64"}};
-  check_binary_layout(out, archive, model_identifier,
+  const std::array<binary_name, 2> binaries{
+      {{model_identifier, "CoSimulation"}, {me_model_identifier, "ModelExchange"}}};
+  check_binary_layout(out, archive, binaries,
                       {"linux64", k_fmi3_tuples, "an FMI 3 platform tuple", "FMI 2", ""});
 }
 

@@ -3,6 +3,7 @@
 #include <elf.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <map>
 #include <set>
@@ -101,8 +102,9 @@ void check_archive_ties3(reporter& out, const archive_listing& archive,
       {"win64", "x86_64-windows"},
       {"win32", "x86-windows"},
       {"darwin64", "x86_64-darwin"}};
+  const std::array<binary_name, 1> binaries{{{model_identifier, "CoSimulation"}}};
   check_binary_layout(
-      out, archive, model_identifier,
+      out, archive, binaries,
       {"x86_64-linux", k_fmi2_folders, "an FMI 2.0 platform folder", "FMI 3.0", "fmi3."});
 }
 

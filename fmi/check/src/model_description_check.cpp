@@ -106,13 +106,16 @@ std::vector<finding> check_description(std::string_view xml, const archive_listi
       out, *root,
       {"ModelExchange", "CoSimulation", "UnitDefinitions", "TypeDefinitions", "LogCategories",
        "DefaultExperiment", "VendorAnnotations", "ModelVariables", "ModelStructure"});
-  check_co_simulation(md, root->FirstChildElement("CoSimulation"));
+  check_interfaces(md, *root);
   check_type_definitions(md, root->FirstChildElement("TypeDefinitions"));
   check_log_categories(md, root->FirstChildElement("LogCategories"));
   check_default_experiment(md, root->FirstChildElement("DefaultExperiment"));
   check_model_variables(md, root->FirstChildElement("ModelVariables"));
   check_model_structure(md, root->FirstChildElement("ModelStructure"));
-  if (archive != nullptr) check_archive_ties(out, *archive, md.model_identifier);
+  if (md.model_exchange) check_model_exchange_states(md, root->FirstChildElement("ModelStructure"));
+  if (archive != nullptr) {
+    check_archive_ties(out, *archive, md.model_identifier, md.me_model_identifier);
+  }
   if (model_identifier != nullptr) *model_identifier = md.model_identifier;
   return out.take();
 }

@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,7 +49,9 @@ struct md_context {
   explicit md_context(reporter& r) : out(r) {}
 
   reporter& out;
-  std::string model_identifier;  // set by check_co_simulation when valid
+  std::string model_identifier;     // set by check_co_simulation when valid
+  bool model_exchange = false;      // a <ModelExchange> element is present
+  std::string me_model_identifier;  // set by check_model_exchange when valid
   std::map<std::string, simple_type, std::less<>> simple_types;  // by check_type_definitions
   std::vector<variable> vars;                                    // by check_model_variables
 };
@@ -72,7 +75,9 @@ std::vector<finding> check_description(std::string_view xml, const archive_listi
 // --- fmiModelDescription attributes, CoSimulation, LogCategories, DefaultExperiment
 // (root_check.cpp)
 void check_root_attributes(md_context& md, const XMLElement& root);
-void check_co_simulation(md_context& md, const XMLElement* cs);
+/// <CoSimulation> and <ModelExchange>: at least one of them, each checked when present.
+void check_interfaces(md_context& md, const XMLElement& root);
+void check_co_simulation(md_context& md, const XMLElement& cs);
 void check_log_categories(md_context& md, const XMLElement* lc);
 void check_default_experiment(md_context& md, const XMLElement* de);
 
@@ -93,6 +98,13 @@ void check_values(md_context& md, const variable& v);
 // --- ModelStructure (model_structure_check.cpp)
 void check_model_structure(md_context& md, const XMLElement* ms);
 
+// --- Model Exchange (model_exchange_check.cpp)
+/// The attributes of <ModelExchange>; sets `md.model_exchange` and `md.me_model_identifier`.
+void check_model_exchange(md_context& md, const XMLElement& me);
+/// The continuous states of an FMU with <ModelExchange>, as <ModelStructure><Derivatives>
+/// defines them; run after check_model_structure.
+void check_model_exchange_states(md_context& md, const XMLElement* ms);
+
 // --- the archive next to the description (archive_check.cpp)
 /// How one FMI version lays out its binaries, for check_binary_layout.
 struct binary_layout {
@@ -104,11 +116,17 @@ struct binary_layout {
   std::string_view version;       ///< "FMI 2" or "FMI 3.0", for the message
   std::string_view rule_prefix;   ///< "" (2.0) or "fmi3." (3.0)
 };
-/// Platform folders and the binary named after CoSimulation@modelIdentifier ("" if invalid).
+/// A binary the description names: the modelIdentifier ("" if invalid) of one interface element.
+struct binary_name {
+  std::string_view model_identifier;
+  std::string_view element;  ///< "CoSimulation" or "ModelExchange"
+};
+/// Platform folders, and one binary per distinct modelIdentifier of `binaries`.
 void check_binary_layout(reporter& out, const archive_listing& archive,
-                         std::string_view model_identifier, const binary_layout& layout);
+                         std::span<const binary_name> binaries, const binary_layout& layout);
+/// The FMI 2.0 ties; `me_model_identifier` is "" without a valid <ModelExchange>.
 void check_archive_ties(reporter& out, const archive_listing& archive,
-                        std::string_view model_identifier);
+                        std::string_view model_identifier, std::string_view me_model_identifier);
 
 }  // namespace stride::fmi_check::detail
 

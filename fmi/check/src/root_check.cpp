@@ -1,5 +1,6 @@
 // The fmiModelDescription element and the children before the variables: root attributes,
-// CoSimulation, LogCategories and DefaultExperiment (docs/fmi-rules.md §2.2).
+// CoSimulation (ModelExchange: model_exchange_check.cpp), LogCategories and DefaultExperiment
+// (docs/fmi-rules.md §2.2).
 #include <cmath>
 
 #include "model_description_check.hpp"
@@ -47,11 +48,20 @@ void check_root_attributes(md_context& md, const XMLElement& root) {
   }
 }
 
-void check_co_simulation(md_context& md, const XMLElement* cs) {
-  if (cs == nullptr) {
-    md.out.error("cosim.missing", "there is no <CoSimulation> element: not a Co-Simulation FMU");
-    return;
+void check_interfaces(md_context& md, const XMLElement& root) {
+  const XMLElement* cs = root.FirstChildElement("CoSimulation");
+  const XMLElement* me = root.FirstChildElement("ModelExchange");
+  if (cs == nullptr && me == nullptr) {
+    // the rule keeps its id from the time Stride took Co-Simulation FMUs only
+    md.out.error("cosim.missing",
+                 "there is neither <CoSimulation> nor <ModelExchange>: the FMU implements no "
+                 "interface type");
   }
+  if (cs != nullptr) check_co_simulation(md, *cs);
+  if (me != nullptr) check_model_exchange(md, *me);
+}
+
+void check_co_simulation(md_context& md, const XMLElement& cs) {
   static const std::initializer_list<std::string_view> k_flags = {
       "needsExecutionTool",
       "canHandleVariableCommunicationStepSize",
@@ -65,27 +75,27 @@ void check_co_simulation(md_context& md, const XMLElement* cs) {
   std::set<std::string_view> allowed(k_flags);
   allowed.insert("modelIdentifier");
   allowed.insert("maxOutputDerivativeOrder");
-  check_attributes(md.out, *cs, allowed);
-  const char* id = cs->Attribute("modelIdentifier");
+  check_attributes(md.out, cs, allowed);
+  const char* id = cs.Attribute("modelIdentifier");
   if (id == nullptr) {
-    md.out.error("cosim.model_identifier", at(*cs) + ": <CoSimulation> has no modelIdentifier");
+    md.out.error("cosim.model_identifier", at(cs) + ": <CoSimulation> has no modelIdentifier");
   } else if (!is_c_identifier(id)) {
     md.out.error("cosim.model_identifier",
-                 at(*cs) + ": modelIdentifier " + quote(id) +
+                 at(cs) + ": modelIdentifier " + quote(id) +
                      " is not a C identifier (it names binaries/linux64/<modelIdentifier>.so)");
   } else {
     md.model_identifier = id;
   }
   for (std::string_view flag : k_flags) {
-    const char* value = cs->Attribute(std::string(flag).c_str());
+    const char* value = cs.Attribute(std::string(flag).c_str());
     if (value != nullptr && !parse_xs_boolean(value)) {
-      md.out.error("cosim.flag", at(*cs) + ": " + std::string(flag) + "=" + quote(value) +
+      md.out.error("cosim.flag", at(cs) + ": " + std::string(flag) + "=" + quote(value) +
                                      " is not an xs:boolean (true|false)");
     }
   }
-  if (const char* order = cs->Attribute("maxOutputDerivativeOrder");
+  if (const char* order = cs.Attribute("maxOutputDerivativeOrder");
       order != nullptr && !parse_xs_unsigned_int(order)) {
-    md.out.error("cosim.flag", at(*cs) + ": maxOutputDerivativeOrder=" + quote(order) +
+    md.out.error("cosim.flag", at(cs) + ": maxOutputDerivativeOrder=" + quote(order) +
                                    " is not an unsigned integer");
   }
 }

@@ -24,7 +24,9 @@ constexpr std::array k_rules{
     rule_description{"archive.duplicate_entry", "no entry name occurs twice"},
     rule_description{"archive.name_ascii", "entry names are ASCII (warning)"},
     rule_description{"archive.model_description", "modelDescription.xml is at the archive root"},
-    rule_description{"archive.binary", "binaries/linux64/<modelIdentifier>.so is present"},
+    rule_description{"archive.binary",
+                     "binaries/linux64/<modelIdentifier>.so is present, for each interface "
+                     "element's modelIdentifier"},
     rule_description{"archive.platform_dir",
                      "no FMI 3 platform tuple (x86_64-linux, ...) for a platform FMI 2 names"},
     // docs/fmi-rules.md §2.2 modelDescription.xml
@@ -41,11 +43,13 @@ constexpr std::array k_rules{
     rule_description{"structure.child_order",
                      "child elements are known, unique and in the order of the XSD sequence"},
     rule_description{"structure.model_structure", "the ModelStructure element is present"},
-    rule_description{"cosim.missing", "a CoSimulation element is present"},
+    rule_description{"cosim.missing", "a CoSimulation or a ModelExchange element is present"},
     rule_description{"cosim.model_identifier", "CoSimulation@modelIdentifier is a C identifier"},
     rule_description{"cosim.flag",
                      "capability flags are xs:boolean, maxOutputDerivativeOrder "
                      "unsigned"},
+    rule_description{"me.model_identifier", "ModelExchange@modelIdentifier is a C identifier"},
+    rule_description{"me.flag", "ModelExchange capability flags are xs:boolean"},
     rule_description{"type_definitions.name", "SimpleType names are given and unique"},
     rule_description{"log_categories.name", "every Category has a name"},
     rule_description{"log_categories.unique", "Category names are unique"},
@@ -103,6 +107,15 @@ constexpr std::array k_rules{
                      "InitialUnknowns is sorted by index without duplicates"},
     rule_description{"initial_unknowns.kind",
                      "InitialUnknowns dependenciesKind is dependent|constant only"},
+    // docs/fmi-rules.md §2.5 Model Exchange (only with a ModelExchange element)
+    rule_description{"me.derivative_continuous", "every variable in Derivatives is continuous"},
+    rule_description{"me.state",
+                     "the state a listed derivative names is continuous and no (calculated) "
+                     "parameter"},
+    rule_description{"me.state_unique", "each state has one derivative in Derivatives"},
+    rule_description{"me.derivative_unlisted",
+                     "Derivatives lists every derivative attribute not tied to an input"},
+    rule_description{"me.reinit", "only continuous states have reinit"},
     // docs/fmi3-rules.md §8 FMI 3.0: archive and binary
     rule_description{"fmi3.archive.platform_dir",
                      "no FMI 2.0 platform folder (linux64, win64, ...) in an FMI 3.0 FMU"},

@@ -1,5 +1,5 @@
-// stride-fmu-check: static FMI 2.0 and 3.0 Co-Simulation checks of .fmu files (or bare
-// modelDescription.xml files) from the command line.
+// stride-fmu-check: static FMI 2.0 (Co-Simulation and Model Exchange) and FMI 3.0 Co-Simulation
+// checks of .fmu files (or bare modelDescription.xml files) from the command line.
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -15,8 +15,9 @@ namespace {
 constexpr std::string_view k_usage =
     "usage: stride-fmu-check [--list-rules] FILE.fmu|modelDescription.xml...\n"
     "\n"
-    "Checks FMI 2.0 and FMI 3.0 Co-Simulation FMUs against the archive and modelDescription.xml\n"
-    "rules of docs/fmi-rules.md and docs/fmi3-rules.md; fmiVersion chooses the rule set. For an\n"
+    "Checks FMI 2.0 Co-Simulation and Model Exchange FMUs and FMI 3.0 Co-Simulation FMUs\n"
+    "against the archive and modelDescription.xml rules of docs/fmi-rules.md and\n"
+    "docs/fmi3-rules.md; fmiVersion chooses the rule set. For an\n"
     "FMI 3.0 FMU the binary's exported functions are read too (no code of the FMU is loaded).\n"
     "Each finding is printed as\n"
     "  FILE: error|warning: [rule] message\n"

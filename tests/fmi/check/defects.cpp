@@ -24,6 +24,12 @@ const std::string& valid3_xml() {
   return text;
 }
 
+const std::string& valid_me_xml() {
+  static const std::string text =
+      read_text(std::filesystem::path(STRIDE_TEST_DATA_DIR) / "valid_me.xml");
+  return text;
+}
+
 std::string apply(const defect& d, const std::string& base) {
   std::string xml = base;
   for (const auto& [from, to] : d.edits) {

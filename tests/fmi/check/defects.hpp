@@ -32,6 +32,8 @@ void PrintTo(const defect& d, std::ostream* os);
 const std::string& valid_xml();
 /// The text of data/valid_minimal3.xml, the FMI 3.0 counterpart.
 const std::string& valid3_xml();
+/// The text of data/valid_me.xml, a Model Exchange description.
+const std::string& valid_me_xml();
 /// `base` (valid_xml() by default) with the edits of `d` applied; an edit that does not apply
 /// fails the test.
 std::string apply(const defect& d, const std::string& base = valid_xml());
@@ -53,6 +55,7 @@ extern const std::vector<defect> k_type_definitions_defects;
 extern const std::vector<defect> k_variables_defects;
 extern const std::vector<defect> k_start_values_defects;
 extern const std::vector<defect> k_model_structure_defects;
+extern const std::vector<defect> k_model_exchange_defects;
 // and of the FMI 3.0 checkers
 extern const std::vector<defect> k_root3_defects;
 extern const std::vector<defect> k_variables3_defects;

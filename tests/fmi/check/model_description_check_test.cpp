@@ -55,7 +55,8 @@ TEST(fmi_check_model_description, every_defect_rule_is_a_known_rule) {
   }
   for (const auto* defects :
        {&k_model_description_defects, &k_root_defects, &k_type_definitions_defects,
-        &k_variables_defects, &k_start_values_defects, &k_model_structure_defects}) {
+        &k_variables_defects, &k_start_values_defects, &k_model_structure_defects,
+        &k_model_exchange_defects}) {
     for (const defect& d : *defects) EXPECT_TRUE(ids.contains(d.rule)) << d.rule;
   }
 }

@@ -1,7 +1,7 @@
-// Static checks of FMI 2.0 and FMI 3.0 Co-Simulation FMUs against the project's FMI rules
-// (docs/fmi-rules.md §2, docs/fmi3-rules.md §8): archive layout, modelDescription.xml schema and
-// semantic rules, ModelStructure consistency, and for 3.0 the functions the binary exports.
-// The fmiVersion of the description chooses the rule set.
+// Static checks of FMI 2.0 Co-Simulation and Model Exchange FMUs and FMI 3.0 Co-Simulation FMUs
+// against the project's FMI rules (docs/fmi-rules.md §2, docs/fmi3-rules.md §8): archive layout,
+// modelDescription.xml schema and semantic rules, ModelStructure consistency, and for 3.0 the
+// functions the binary exports. The fmiVersion of the description chooses the rule set.
 #ifndef STRIDE_FMI_CHECK_FMU_CHECK_HPP
 #define STRIDE_FMI_CHECK_FMU_CHECK_HPP
 
