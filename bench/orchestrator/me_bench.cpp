@@ -32,8 +32,9 @@ std::string read_text(const fs::path& file) {
 std::shared_ptr<fmu> both_kinds(const temp_dir& dir, const std::string& model,
                                 const std::string& library) {
   std::string description = read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (model + ".xml"));
-  description.replace(description.find("<ModelExchange"), 0,
-                      "<CoSimulation modelIdentifier=\"me_" + model + "\"/>\n  ");
+  // after <ModelExchange/>: the schema orders the two
+  description.insert(description.find("/>", description.find("<ModelExchange")) + 2,
+                     "\n  <CoSimulation modelIdentifier=\"me_" + model + "\"/>");
   const fs::path file = dir.path() / (model + ".fmu");
   test::write_zip(file, {{"modelDescription.xml", description},
                          {"binaries/linux64/me_" + model + ".so", read_text(library)}});

@@ -6,8 +6,8 @@
 
 #include <optional>
 
-#include "stride/cosim/model_exchange.hpp"
 #include "stride/cosim/component.hpp"
+#include "stride/cosim/model_exchange.hpp"
 
 namespace stride::remote {
 

@@ -7,11 +7,10 @@
 
 namespace stride::remote {
 
-remote_component::remote_component(std::shared_ptr<client> link, std::string worker,
-                                   std::string name, std::string hash,
-                                   cosim::model_description description, cosim::log_sink log,
-                                   bool debug_logging,
-                                   const std::optional<cosim::model_exchange_options>& model_exchange)
+remote_component::remote_component(
+    std::shared_ptr<client> link, std::string worker, std::string name, std::string hash,
+    cosim::model_description description, cosim::log_sink log, bool debug_logging,
+    const std::optional<cosim::model_exchange_options>& model_exchange)
     : link_(std::move(link)),
       worker_(std::move(worker)),
       name_(std::move(name)),

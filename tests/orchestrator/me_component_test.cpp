@@ -556,9 +556,11 @@ std::vector<double> chain_at_one_second(fmu& f, std::optional<model_exchange_opt
 }
 
 TEST_F(me_component_test, a_ten_state_chain_follows_its_closed_form_in_both_kinds) {
+  // <CoSimulation> after <ModelExchange/>, as the schema orders them
   auto f =
       load("chain", STRIDE_ME_CHAIN,
-           {"<ModelExchange", "<CoSimulation modelIdentifier=\"me_chain\"/>\n  <ModelExchange"});
+           {"canSerializeFMUstate=\"true\"/>",
+            "canSerializeFMUstate=\"true\"/>\n  <CoSimulation modelIdentifier=\"me_chain\"/>"});
   const auto by_cvode = chain_at_one_second(*f, cvode(1e-8));
   const auto by_rk4 = chain_at_one_second(*f, std::nullopt);  // both offered: Co-Simulation
   ASSERT_EQ(by_cvode.size(), 10u);

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "../remote/worker_process.hpp"
+#include "process.hpp"
 #include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/execution.hpp"
@@ -159,6 +161,46 @@ TEST_F(me_system_test, a_model_exchange_fmu_follows_the_gait_generator) {
   }
   EXPECT_EQ(steps, 250);
   EXPECT_GT(highest_u - lowest_u, 0.05) << "the hip did not move: the test would mean nothing";
+}
+
+// The system of the first test from the command line, with the Model Exchange component on a
+// `stride worker` (DDS domain 131): its integrator settings travel with it, and the results
+// equal those of the run in one process. Adams is asked for; BDF, the default a worker would
+// fall back to if the settings were lost, gives other digits.
+TEST_F(me_system_test, a_model_exchange_component_on_a_worker_gives_the_same_csv) {
+  const auto system_file = [&](const std::string& name, const std::string& settings) {
+    const fs::path file = dir_.path() / (name + ".xml");
+    std::ofstream(file) << "<system name=\"" << name << "\">\n"
+                        << "  <simulation start=\"0\" stop=\"2\" step=\"0.1\"/>\n"
+                        << "  <component name=\"decay\" fmu=\"" << decay_.string() << "\" "
+                        << settings << " rtol=\"1e-5\"/>\n"
+                        << "  <component name=\"source\" fmu=\"stride_test\">\n"
+                        << "    <parameter name=\"gain\" value=\"0\"/>\n"
+                        << "    <parameter name=\"offset\" value=\"0.5\"/>\n"
+                        << "  </component>\n"
+                        << "  <connection from=\"source.y\" to=\"decay.u\"/>\n"
+                        << "  <connection from=\"decay.x\" to=\"source.u\"/>\n"
+                        << "</system>\n";
+    return file;
+  };
+  const std::string cli = STRIDE_CLI;
+  const auto run = [&](const fs::path& system, const std::string& args) {
+    const auto out = dir_.path() / system.stem();
+    const auto r = test::run_command("'" + cli + "' run " + test::quoted(system) +
+                                         " --quiet --output " + test::quoted(out) + " " + args,
+                                     dir_.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_text(out / "results.csv");
+  };
+  const std::string local = run(system_file("local", "method=\"adams\""), "");
+  const std::string bdf = run(system_file("bdf", "method=\"bdf\""), "");
+  remote::test::worker_process worker(cli, "w1", 131, dir_.path() / "w1.log");
+  ASSERT_TRUE(worker.ready()) << worker.output();
+  const std::string remote =
+      run(system_file("remote", "method=\"adams\" worker=\"w1\""), "--domain 131");
+  ASSERT_NE(local.find("decay.x"), std::string::npos) << local;
+  EXPECT_EQ(remote, local) << worker.output();
+  EXPECT_NE(bdf, local);
 }
 
 }  // namespace

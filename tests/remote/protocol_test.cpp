@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "me_wire.hpp"
 #include "protocol.hpp"
 
 namespace stride::remote {
@@ -100,4 +101,35 @@ TEST(remote_protocol, partitions_keep_workers_and_runs_apart) {
 }
 
 }  // namespace
+// Model Exchange settings of an instantiate request: what is set, and only that, comes back
+TEST(remote_protocol, model_exchange_settings_survive_the_wire) {
+  EXPECT_FALSE(model_exchange_from_wire(model_exchange_to_wire(std::nullopt)).has_value());
+  cosim::model_exchange_options o;
+  o.solver = cosim::model_exchange_options::solver_kind::euler;
+  o.method = cosim::model_exchange_options::method_kind::adams;
+  o.rtol = 1e-7;
+  o.max_step = 0.25;
+  const auto back = model_exchange_from_wire(model_exchange_to_wire(o));
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->solver, o.solver);
+  EXPECT_EQ(back->method, o.method);
+  EXPECT_EQ(back->rtol, o.rtol);
+  EXPECT_FALSE(back->atol.has_value());
+  EXPECT_EQ(back->max_step, o.max_step);
+}
+
+TEST(remote_protocol, malformed_model_exchange_settings_are_refused) {
+  auto v = model_exchange_to_wire(cosim::model_exchange_options{});
+  auto bad_solver = v;
+  bad_solver.strings[1] = "rk45";
+  EXPECT_THROW(model_exchange_from_wire(bad_solver), std::runtime_error);
+  auto short_block = v;
+  short_block.reals.pop_back();
+  EXPECT_THROW(model_exchange_from_wire(short_block), std::runtime_error);
+  auto negative = v;
+  negative.booleans[0] = true;
+  negative.reals[0] = -1;
+  EXPECT_THROW(model_exchange_from_wire(negative), std::runtime_error);
+}
+
 }  // namespace stride::remote

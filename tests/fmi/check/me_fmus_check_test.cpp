@@ -1,7 +1,8 @@
 // The acceptance tools on the project's Model Exchange test FMUs (tests/orchestrator/me_fmus),
 // packed as archives at test time: stride-fmu-check finds nothing, and check_fmu_exports.sh
 // wants the Model Exchange functions of an FMU with <ModelExchange> but not the
-// Co-Simulation-only ones of an FMU without <CoSimulation>.
+// Co-Simulation-only ones of an FMU without <CoSimulation>; the ball and the chain, whose
+// libraries also implement Co-Simulation, pass declaring both.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -80,16 +81,32 @@ TEST_P(fmi_check_me_fmus, export_check_passes_without_co_simulation_functions) {
       << result.output;
 }
 
-TEST_P(fmi_check_me_fmus, export_check_wants_co_simulation_functions_when_declared) {
-  // the same binary declared as a Co-Simulation FMU as well: it has no fmi2DoStep
-  const me_fmu& m = GetParam();
+// the description with <CoSimulation> declared as well, for the same binary
+std::string with_co_simulation(const me_fmu& m) {
   std::string description =
       check::test::read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (m.model + ".xml"));
-  const std::string me = "<ModelExchange modelIdentifier=\"me_" + m.model + "\"";
-  const auto at = description.find(me);
-  ASSERT_NE(at, std::string::npos) << description;
-  description.insert(at, "<CoSimulation modelIdentifier=\"me_" + m.model + "\"/>\n  ");
-  const auto result = exports(pack(m, description));
+  // after <ModelExchange/>: the schema orders the two
+  const auto me = description.find("<ModelExchange modelIdentifier=\"me_" + m.model + "\"");
+  const auto end = me == std::string::npos ? me : description.find("/>", me);
+  if (end != std::string::npos) {
+    description.insert(end + 2, "\n  <CoSimulation modelIdentifier=\"me_" + m.model + "\"/>");
+  }
+  return description;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    me_fmus, fmi_check_me_fmus,
+    testing::Values(me_fmu{"decay", STRIDE_ME_DECAY}, me_fmu{"ball", STRIDE_ME_BALL},
+                    me_fmu{"stair", STRIDE_ME_STAIR}, me_fmu{"chain", STRIDE_ME_CHAIN}),
+    [](const testing::TestParamInfo<me_fmu>& info) { return info.param.model; });
+
+// Model Exchange only binaries
+class fmi_check_me_only_fmus : public fmi_check_me_fmus {};
+
+TEST_P(fmi_check_me_only_fmus, export_check_wants_co_simulation_functions_when_declared) {
+  const std::string description = with_co_simulation(GetParam());
+  ASSERT_NE(description.find("<CoSimulation"), std::string::npos) << description;
+  const auto result = exports(pack(GetParam(), description));
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find("of the 44 FMI 2.0 Co-Simulation + Model Exchange functions"),
             std::string::npos)
@@ -97,10 +114,29 @@ TEST_P(fmi_check_me_fmus, export_check_wants_co_simulation_functions_when_declar
   EXPECT_NE(result.output.find("fmi2DoStep"), std::string::npos) << result.output;
 }
 
-INSTANTIATE_TEST_SUITE_P(me_fmus, fmi_check_me_fmus,
+INSTANTIATE_TEST_SUITE_P(me_fmus, fmi_check_me_only_fmus,
                          testing::Values(me_fmu{"decay", STRIDE_ME_DECAY},
-                                         me_fmu{"ball", STRIDE_ME_BALL},
                                          me_fmu{"stair", STRIDE_ME_STAIR}),
+                         [](const testing::TestParamInfo<me_fmu>& info) {
+                           return info.param.model;
+                         });
+
+// binaries with both interfaces
+class fmi_check_twin_fmus : public fmi_check_me_fmus {};
+
+TEST_P(fmi_check_twin_fmus, both_interfaces_declared_pass) {
+  const std::string description = with_co_simulation(GetParam());
+  ASSERT_NE(description.find("<CoSimulation"), std::string::npos) << description;
+  const fs::path fmu = pack(GetParam(), description);
+  const auto findings = check::check_fmu(fmu);
+  EXPECT_TRUE(findings.empty()) << describe(fmu, findings);
+  const auto result = exports(fmu);
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(me_fmus, fmi_check_twin_fmus,
+                         testing::Values(me_fmu{"ball", STRIDE_ME_BALL},
+                                         me_fmu{"chain", STRIDE_ME_CHAIN}),
                          [](const testing::TestParamInfo<me_fmu>& info) {
                            return info.param.model;
                          });
