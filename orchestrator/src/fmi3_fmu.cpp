@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "required_symbol.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::cosim::fmi3 {
@@ -63,11 +64,10 @@ std::shared_ptr<binary> load(const fs::path& file, const fs::path& dir, const st
     throw fmu_import_error(where + ": cannot load " + relative + ": " +
                            (why ? why : "unknown error"));
   }
-#define STRIDE_RESOLVE(name)                                                     \
-  b->fn.name = reinterpret_cast<name##TYPE*>(::dlsym(b->library, #name));        \
-  if (b->fn.name == nullptr) {                                                   \
-    throw fmu_import_error(where + ": " + relative + " does not export " #name); \
-  }
+  const std::string binary_name = where + ": " + relative;
+#define STRIDE_RESOLVE(name)                  \
+  b->fn.name = reinterpret_cast<name##TYPE*>( \
+      cosim::detail::required_symbol(::dlsym(b->library, #name), #name, binary_name));
   STRIDE_FMI3_IMPORTED_FUNCTIONS(STRIDE_RESOLVE)
 #undef STRIDE_RESOLVE
   const char* version = b->fn.fmi3GetVersion();

@@ -15,6 +15,7 @@
 #include "fmi2_log.hpp"
 #include "fmi3_fmu.hpp"
 #include "me_component.hpp"
+#include "required_symbol.hpp"
 #include "stride/common/files.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/fmi2/fmi2_api.h"
@@ -392,11 +393,10 @@ std::shared_ptr<fmu> fmu::load(const fs::path& file, const fmu_import_options& o
     throw fmu_import_error(where + ": cannot load binaries/linux64/" + id +
                            ".so: " + (why ? why : "unknown error"));
   }
-#define STRIDE_RESOLVE(name)                                                                   \
-  p->fn.name = reinterpret_cast<name##TYPE*>(::dlsym(p->library, #name));                      \
-  if (p->fn.name == nullptr) {                                                                 \
-    throw fmu_import_error(where + ": binaries/linux64/" + id + ".so does not export " #name); \
-  }
+  const std::string binary_name = where + ": binaries/linux64/" + id + ".so";
+#define STRIDE_RESOLVE(name)                  \
+  p->fn.name = reinterpret_cast<name##TYPE*>( \
+      detail::required_symbol(::dlsym(p->library, #name), #name, binary_name));
   if (cs) {
     STRIDE_FMI2_CS_FUNCTIONS(STRIDE_RESOLVE)
   } else {

@@ -8,6 +8,7 @@
 #include "cvode_solver.hpp"
 #include "euler_solver.hpp"
 #include "fmi2_log.hpp"
+#include "required_symbol.hpp"
 #include "state_bytes.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
@@ -78,12 +79,11 @@ class me_component final : public component, private detail::ode_system {
                             " has different Co-Simulation and Model Exchange binaries; only one "
                             "binary per FMU is supported");
     }
-#define STRIDE_RESOLVE(fn)                                                                        \
-  fn_.fn = reinterpret_cast<fn##TYPE*>(owner_->symbol(#fn));                                      \
-  if (fn_.fn == nullptr) {                                                                        \
-    throw component_error("component '" + name_ + "': the binary of " + owner_->file().string() + \
-                          " does not export " #fn);                                               \
-  }
+    const std::string binary_name =
+        "component '" + name_ + "': the binary of " + owner_->file().string();
+#define STRIDE_RESOLVE(fn) \
+  fn_.fn =                 \
+      reinterpret_cast<fn##TYPE*>(detail::required_symbol(owner_->symbol(#fn), #fn, binary_name));
     STRIDE_ME_COMMON_FUNCTIONS(STRIDE_RESOLVE)
     STRIDE_FMI2_ME_FUNCTIONS(STRIDE_RESOLVE)
 #undef STRIDE_RESOLVE
