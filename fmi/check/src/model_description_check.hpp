@@ -77,6 +77,13 @@ std::vector<finding> check_description(std::string_view xml, const archive_listi
 void check_root_attributes(md_context& md, const XMLElement& root);
 /// <CoSimulation> and <ModelExchange>: at least one of them, each checked when present.
 void check_interfaces(md_context& md, const XMLElement& root);
+/// The rules <CoSimulation> and <ModelExchange> share: allowed attributes, xs:boolean `flags`
+/// (rule `<rule>.flag`), a C-identifier modelIdentifier (`<rule>.model_identifier`). Returns the
+/// identifier, or "" when it is missing or not valid.
+std::string check_interface_element(md_context& md, const XMLElement& element,
+                                    const std::string& rule,
+                                    std::initializer_list<std::string_view> flags,
+                                    std::initializer_list<std::string_view> other_attributes);
 void check_co_simulation(md_context& md, const XMLElement& cs);
 void check_log_categories(md_context& md, const XMLElement* lc);
 void check_default_experiment(md_context& md, const XMLElement* de);

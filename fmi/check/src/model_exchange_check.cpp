@@ -109,34 +109,12 @@ void check_reinit(md_context& md, const std::set<std::size_t>& states) {
 
 void check_model_exchange(md_context& md, const XMLElement& me) {
   md.model_exchange = true;
-  static const std::initializer_list<std::string_view> k_flags = {
-      "needsExecutionTool",
-      "completedIntegratorStepNotNeeded",
-      "canBeInstantiatedOnlyOncePerProcess",
-      "canNotUseMemoryManagementFunctions",
-      "canGetAndSetFMUstate",
-      "canSerializeFMUstate",
-      "providesDirectionalDerivative"};
-  std::set<std::string_view> allowed(k_flags);
-  allowed.insert("modelIdentifier");
-  check_attributes(md.out, me, allowed);
-  const char* id = me.Attribute("modelIdentifier");
-  if (id == nullptr) {
-    md.out.error("me.model_identifier", at(me) + ": <ModelExchange> has no modelIdentifier");
-  } else if (!is_c_identifier(id)) {
-    md.out.error("me.model_identifier",
-                 at(me) + ": modelIdentifier " + quote(id) +
-                     " is not a C identifier (it names binaries/linux64/<modelIdentifier>.so)");
-  } else {
-    md.me_model_identifier = id;
-  }
-  for (std::string_view flag : k_flags) {
-    const char* value = me.Attribute(std::string(flag).c_str());
-    if (value != nullptr && !parse_xs_boolean(value)) {
-      md.out.error("me.flag", at(me) + ": " + std::string(flag) + "=" + quote(value) +
-                                  " is not an xs:boolean (true|false)");
-    }
-  }
+  md.me_model_identifier = check_interface_element(
+      md, me, "me",
+      {"needsExecutionTool", "completedIntegratorStepNotNeeded",
+       "canBeInstantiatedOnlyOncePerProcess", "canNotUseMemoryManagementFunctions",
+       "canGetAndSetFMUstate", "canSerializeFMUstate", "providesDirectionalDerivative"},
+      {});
 }
 
 void check_model_exchange_states(md_context& md, const XMLElement* ms) {

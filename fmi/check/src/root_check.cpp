@@ -61,38 +61,44 @@ void check_interfaces(md_context& md, const XMLElement& root) {
   if (me != nullptr) check_model_exchange(md, *me);
 }
 
-void check_co_simulation(md_context& md, const XMLElement& cs) {
-  static const std::initializer_list<std::string_view> k_flags = {
-      "needsExecutionTool",
-      "canHandleVariableCommunicationStepSize",
-      "canInterpolateInputs",
-      "canRunAsynchronuously",
-      "canBeInstantiatedOnlyOncePerProcess",
-      "canNotUseMemoryManagementFunctions",
-      "canGetAndSetFMUstate",
-      "canSerializeFMUstate",
-      "providesDirectionalDerivative"};
-  std::set<std::string_view> allowed(k_flags);
+std::string check_interface_element(md_context& md, const XMLElement& element,
+                                    const std::string& rule,
+                                    std::initializer_list<std::string_view> flags,
+                                    std::initializer_list<std::string_view> other_attributes) {
+  std::set<std::string_view> allowed(flags);
+  allowed.insert(other_attributes);
   allowed.insert("modelIdentifier");
-  allowed.insert("maxOutputDerivativeOrder");
-  check_attributes(md.out, cs, allowed);
-  const char* id = cs.Attribute("modelIdentifier");
+  check_attributes(md.out, element, allowed);
+  std::string identifier;
+  const char* id = element.Attribute("modelIdentifier");
   if (id == nullptr) {
-    md.out.error("cosim.model_identifier", at(cs) + ": <CoSimulation> has no modelIdentifier");
+    md.out.error(rule + ".model_identifier",
+                 at(element) + ": <" + element.Name() + "> has no modelIdentifier");
   } else if (!is_c_identifier(id)) {
-    md.out.error("cosim.model_identifier",
-                 at(cs) + ": modelIdentifier " + quote(id) +
+    md.out.error(rule + ".model_identifier",
+                 at(element) + ": modelIdentifier " + quote(id) +
                      " is not a C identifier (it names binaries/linux64/<modelIdentifier>.so)");
   } else {
-    md.model_identifier = id;
+    identifier = id;
   }
-  for (std::string_view flag : k_flags) {
-    const char* value = cs.Attribute(std::string(flag).c_str());
+  for (std::string_view flag : flags) {
+    const char* value = element.Attribute(std::string(flag).c_str());
     if (value != nullptr && !parse_xs_boolean(value)) {
-      md.out.error("cosim.flag", at(cs) + ": " + std::string(flag) + "=" + quote(value) +
-                                     " is not an xs:boolean (true|false)");
+      md.out.error(rule + ".flag", at(element) + ": " + std::string(flag) + "=" + quote(value) +
+                                       " is not an xs:boolean (true|false)");
     }
   }
+  return identifier;
+}
+
+void check_co_simulation(md_context& md, const XMLElement& cs) {
+  md.model_identifier = check_interface_element(
+      md, cs, "cosim",
+      {"needsExecutionTool", "canHandleVariableCommunicationStepSize", "canInterpolateInputs",
+       "canRunAsynchronuously", "canBeInstantiatedOnlyOncePerProcess",
+       "canNotUseMemoryManagementFunctions", "canGetAndSetFMUstate", "canSerializeFMUstate",
+       "providesDirectionalDerivative"},
+      {"maxOutputDerivativeOrder"});
   if (const char* order = cs.Attribute("maxOutputDerivativeOrder");
       order != nullptr && !parse_xs_unsigned_int(order)) {
     md.out.error("cosim.flag", at(cs) + ": maxOutputDerivativeOrder=" + quote(order) +
