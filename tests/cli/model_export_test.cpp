@@ -91,7 +91,8 @@ TEST_P(model_export, reads_back_reexports_and_runs_as_its_system_xml) {
   const fs::path again = scratch.path() / "again" / archive.filename();
   fs::create_directories(again.parent_path());
   export_ssp(imported, again);
-  EXPECT_EQ(read_file(again), read_file(archive)) << "the export of the export differs";
+  // compared whole (not printed: megabytes of FMUs)
+  EXPECT_TRUE(read_file(again) == read_file(archive)) << "the export of the export differs";
 
   const auto runs = k_runs.find(GetParam());
   if (runs == k_runs.end()) return;  // DDS workers or hours of learning: compared above only
