@@ -25,17 +25,21 @@ void refuse_export(std::string_view format, const source_location& where, const 
 
 export_plan::export_plan(const system_structure& system, const std::vector<fs::path>& search,
                          std::string_view format)
-    : system_(system), format_(format) {
-  check_system();
-  for (const auto& c : system.components) add_component(c, search);
-  if (components_.empty()) refuse_export(format_, system.where, "the system has no component");
-  for (const auto& c : system.connections) add_connection(c);
+    : format_(format) {
+  // SSP writes the copies of replica groups as components of their own: any SSP tool sees
+  // every FMU instance, and Stride's importer accepts the copies' names "gait[1]"
+  system_ = ssp() ? expand_replicas(system) : system;
+  if (!ssp()) check_osp_system();
+  for (const auto& c : system_.components) add_component(c, search);
+  if (components_.empty()) refuse_export(format_, system_.where, "the system has no component");
+  for (const auto& c : system_.connections) add_connection(c);
   finish_connections();
 }
 
-// what belongs to a run rather than to the system: neither format has a word for it, and the
-// importers give the defaults back (record every output at every base step into results.csv)
-void export_plan::check_system() const {
+// what belongs to a run rather than to the system: OSP has no word for it, and its importer
+// gives the defaults back (record every output at every base step into results.csv); SSP
+// carries it in Stride's annotations
+void export_plan::check_osp_system() const {
   const system_structure& s = system_;
   if (!s.groups.empty()) {
     const replica_group& g = s.groups.front();
@@ -51,7 +55,7 @@ void export_plan::check_system() const {
   }
   const record_spec& r = s.record;
   const std::string run_option =
-      " (SSP and OSP say nothing of recording; give it to stride run: --record, "
+      " (OSP says nothing of recording; give it to stride run: --record, "
       "--record-interval)";
   if (!r.enabled) refuse_export(format_, r.where, "recording is switched off" + run_option);
   if (!r.signals.empty()) {
@@ -64,17 +68,18 @@ void export_plan::check_system() const {
                       " s is not the base step" + run_option);
   }
   if (r.file != "results.csv") {
-    refuse_export(format_, r.where,
-                  "the results file \"" + r.file + "\" (the importers record into results.csv)");
+    refuse_export(
+        format_, r.where,
+        "the results file \"" + r.file + "\" (the OSP importer records into results.csv)");
   }
 }
 
 void export_plan::add_component(const component_spec& c, const std::vector<fs::path>& search) {
   const std::string who = "component '" + c.name + "': ";
-  if (const std::string problem = component_name_problem(c.name); !problem.empty()) {
+  if (const std::string problem = component_name_problem(c.name, ssp()); !problem.empty()) {
     refuse_export(format_, c.where, who + problem);
   }
-  if (!c.worker.empty()) {
+  if (!c.worker.empty() && !ssp()) {
     refuse_export(format_, c.where,
                   who + "runs on worker '" + c.worker + "' (placement is a Stride setting)");
   }
@@ -111,7 +116,9 @@ std::string export_plan::fmu_name_for(const fs::path& file) const {
 
 // each value checked against its variable's type and written canonically ("1" for a Boolean
 // becomes "true"); a variable given twice keeps its first place and its last value, as the
-// importers make of it
+// importers make of it. A placeholder in a value that is not a String ("${agent}" for an
+// Integer) is the run's to substitute: no SSP type holds it, so SSP keeps it apart (in Stride's
+// component annotation); OSP has no place for it.
 void export_plan::add_values(export_component& out) {
   const component_spec& c = *out.spec;
   for (const auto& p : c.parameters) {
@@ -119,53 +126,73 @@ void export_plan::add_values(export_component& out) {
     const variable_description* v = out.description->find(p.variable);
     if (v == nullptr) refuse_export(format_, p.where, "parameter '" + name + "': no such variable");
     std::string text = p.value;
-    if (v->type != variable_type::string) {
-      if (text.find("${") != std::string::npos) {
-        refuse_export(format_, p.where,
-                      "parameter '" + name + "': the placeholder in '" + text + "' (a " +
-                          std::string(to_string(v->type)) + " must be a plain value)");
-      }
+    const bool placeholder =
+        v->type != variable_type::string && text.find("${") != std::string::npos;
+    if (placeholder && !ssp()) {
+      refuse_export(format_, p.where,
+                    "parameter '" + name + "': the placeholder in '" + text + "' (a " +
+                        std::string(to_string(v->type)) + " must be a plain value)");
+    }
+    if (v->type != variable_type::string && !placeholder) {
       try {
         text = format_scalar(parse_scalar(v->type, text));
       } catch (const std::invalid_argument& e) {
         refuse_export(format_, p.where, "parameter '" + name + "': " + e.what());
       }
     }
-    const auto same = [&](const export_value& e) { return e.variable == v; };
-    if (auto it = std::find_if(out.values.begin(), out.values.end(), same);
-        it != out.values.end()) {
-      it->text = std::move(text);
-    } else {
-      out.values.push_back({v, std::move(text)});
-    }
+    set_value(placeholder ? out.placeholders : out.values, v, std::move(text));
+    erase_value(placeholder ? out.values : out.placeholders, v);
   }
 }
 
-// "comp.var", "comp.var[*]" or "comp.var[2:5]" as (component, variable) pairs, ascending
+void export_plan::set_value(std::vector<export_value>& values, const variable_description* v,
+                            std::string text) {
+  const auto same = [&](const export_value& e) { return e.variable == v; };
+  if (auto it = std::find_if(values.begin(), values.end(), same); it != values.end()) {
+    it->text = std::move(text);
+  } else {
+    values.push_back({v, std::move(text)});
+  }
+}
+
+void export_plan::erase_value(std::vector<export_value>& values, const variable_description* v) {
+  std::erase_if(values, [&](const export_value& e) { return e.variable == v; });
+}
+
+// "comp.var", "comp.var[*]" or "comp.var[2:5]" as (component, variable) pairs, ascending; the
+// component part may name a replica group's copies ("gait[*]", "gait[2:3]"), as for a run
 std::vector<std::pair<std::size_t, std::size_t>> export_plan::expand_side(
     const connection_spec& c, const std::string& side) const {
-  const auto index_of = [&](std::string_view name) -> std::optional<std::size_t> {
-    for (std::size_t i = 0; i < system_.components.size(); ++i) {
-      if (system_.components[i].name == name) return i;
+  std::vector<std::string> names;
+  for (const auto& component : system_.components) names.push_back(component.name);
+  const std::size_t end = component_end(side, [&](std::string_view n) {
+    return std::find(names.begin(), names.end(), n) != names.end();
+  });
+  const std::string what = "connection " + c.from + " -> " + c.to + ": ";
+  std::vector<std::size_t> components;
+  if (end != std::string::npos) {
+    const std::string component = side.substr(0, end);
+    try {
+      components = expand_component_group(names, component, "'" + side + "': ");
+    } catch (const validation_error& e) {
+      // an unknown copy range says what is wrong with it; an unknown name is plainly unknown
+      if (component.find('[') != std::string::npos)
+        refuse_export(format_, c.where, what + e.what());
     }
-    return std::nullopt;
-  };
-  const std::size_t end =
-      component_end(side, [&](std::string_view n) { return index_of(n).has_value(); });
-  const auto component = end == std::string::npos ? std::nullopt : index_of(side.substr(0, end));
-  if (!component) {
-    refuse_export(format_, c.where,
-                  "connection " + c.from + " -> " + c.to + ": '" + side + "' names no component");
   }
-  std::vector<std::size_t> variables;
-  try {
-    variables = expand_variable_group(*components_[*component].description, side.substr(end + 1),
-                                      "'" + side + "': ");
-  } catch (const validation_error& e) {
-    refuse_export(format_, c.where, "connection " + c.from + " -> " + c.to + ": " + e.what());
-  }
+  if (components.empty())
+    refuse_export(format_, c.where, what + "'" + side + "' names no component");
   std::vector<std::pair<std::size_t, std::size_t>> out;
-  for (std::size_t v : variables) out.emplace_back(*component, v);
+  for (const std::size_t component : components) {
+    try {
+      for (std::size_t v : expand_variable_group(*components_[component].description,
+                                                 side.substr(end + 1), "'" + side + "': ")) {
+        out.emplace_back(component, v);
+      }
+    } catch (const validation_error& e) {
+      refuse_export(format_, c.where, what + e.what());
+    }
+  }
   return out;
 }
 

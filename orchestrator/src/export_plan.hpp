@@ -37,6 +37,9 @@ struct export_component {
   const model_description* description = nullptr;
   std::vector<std::size_t> connectors;  ///< connected variables (indices), ascending
   std::vector<export_value> values;     ///< one per variable, in the system's order
+  /// SSP: values of non-String variables holding a placeholder ("${agent}"), as written; the
+  /// run substitutes them (none of these variables is in `values`)
+  std::vector<export_value> placeholders;
 };
 
 /// One scalar connection.
@@ -52,9 +55,12 @@ struct export_connection {
 /// The system as both exporters write it.
 class export_plan {
  public:
-  /// \throws validation_error (via refuse_export) for anything the formats cannot say: replica
-  /// groups, agents, workers, Model Exchange, recording other than the default, names the
-  /// importers refuse, unknown variables, connections other than output → input/parameter.
+  /// For SSP the plan holds the system with its replica groups expanded (the copies are
+  /// components "gait[1]", ...); workers, agents and recording are the SSP writer's to annotate.
+  /// \throws validation_error (via refuse_export) for anything the format cannot say: Model
+  /// Exchange, names the importers refuse, unknown variables, connections other than output →
+  /// input/parameter; for OSP also replica groups, agents, workers and recording other than the
+  /// default.
   export_plan(const system_structure& system, const std::vector<std::filesystem::path>& search,
               std::string_view format);
   export_plan(const export_plan&) = delete;
@@ -68,18 +74,22 @@ class export_plan {
   std::string_view format() const noexcept { return format_; }
 
  private:
-  void check_system() const;
+  bool ssp() const noexcept { return format_ == "SSP"; }
+  void check_osp_system() const;
   void add_component(const component_spec& c, const std::vector<std::filesystem::path>& search);
   std::string fmu_name_for(const std::filesystem::path& file) const;
   void add_values(export_component& out);
+  static void set_value(std::vector<export_value>& values, const variable_description* v,
+                        std::string text);
+  static void erase_value(std::vector<export_value>& values, const variable_description* v);
   void add_connection(const connection_spec& c);
   std::vector<std::pair<std::size_t, std::size_t>> expand_side(const connection_spec& c,
                                                                const std::string& side) const;
   void finish_connections();
 
-  const system_structure& system_;
   std::string format_;
-  fmu_facts facts_;  // owns the model descriptions the components point at
+  system_structure system_;  // the system as written (SSP: replica groups expanded)
+  fmu_facts facts_;          // owns the model descriptions the components point at
   std::vector<export_fmu> fmus_;
   std::vector<std::filesystem::path> canonical_;  // parallel to fmus_
   std::vector<export_component> components_;

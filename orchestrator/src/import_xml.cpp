@@ -270,7 +270,27 @@ std::string fmu_reference(const fs::path& file, const fs::path& base) {
   return is_bundled_fmu_name(ref) ? "./" + ref : ref;
 }
 
-std::string component_name_problem(std::string_view name) {
+namespace {
+
+// the length of `name` without a trailing copy index "[k]", or its whole length
+std::size_t without_copy_index(std::string_view name) {
+  if (!name.ends_with(']')) return name.size();
+  const auto open = name.rfind('[');
+  if (open == std::string_view::npos || open == 0) return name.size();
+  const std::string_view digits = name.substr(open + 1, name.size() - open - 2);
+  const bool number = !digits.empty() && digits.front() != '0' &&
+                      digits.find_first_not_of("0123456789") == std::string_view::npos;
+  return number ? open : name.size();
+}
+
+}  // namespace
+
+std::string component_name_problem(std::string_view name, bool copy_index) {
+  if (copy_index && !name.empty()) {
+    const std::size_t base = without_copy_index(name);
+    // a copy's name is right when its member's name is
+    if (base < name.size()) return component_name_problem(name.substr(0, base), false);
+  }
   if (name.empty()) return "the name is empty";
   if (name.find('.') != std::string_view::npos) {
     return "the name \"" + std::string(name) +

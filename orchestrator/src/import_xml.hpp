@@ -130,7 +130,9 @@ std::optional<std::filesystem::path> uri_to_path(std::string_view uri,
 std::string fmu_reference(const std::filesystem::path& file, const std::filesystem::path& base);
 
 /// Why `name` cannot be a Stride component name (dots are the importers' to place), or "".
-std::string component_name_problem(std::string_view name);
+/// With `copy_index`, a name may end in one copy index "[k]" (k ≥ 1, no leading zero): the
+/// name a replica group gives copy k of a member ("gait[1]"), as an SSP export writes it.
+std::string component_name_problem(std::string_view name, bool copy_index = false);
 
 /// The system's default name: the file's stem, or for the standard file names
 /// (SystemStructure.ssd, OspSystemStructure.xml) the name of the folder or archive `shown`

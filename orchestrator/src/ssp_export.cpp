@@ -25,6 +25,7 @@ constexpr const char* k_ssd_file = "SystemStructure.ssd";
 constexpr const char* k_ssv_file = "resources/parameters.ssv";
 constexpr const char* k_system_annotation = "org.stride-sim.system";
 constexpr const char* k_connection_annotation = "org.stride-sim.connection";
+constexpr const char* k_component_annotation = "org.stride-sim.component";
 
 // ssc:Real, ssc:Integer, ... of a variable; enumerations have none (an ssc:Enumeration must
 // name an ssd:Enumerations entry, which Stride does not write)
@@ -107,15 +108,29 @@ class ssd_writer {
       XMLElement* e = elements->InsertNewChildElement("ssd:Component");
       e->SetAttribute("name", c.spec->name.c_str());
       e->SetAttribute("source", detail::uri_path("resources/" + plan_.fmus()[c.fmu].name).c_str());
-      if (c.connectors.empty()) continue;
-      XMLElement* connectors = e->InsertNewChildElement("ssd:Connectors");
-      for (std::size_t index : c.connectors) {
-        const variable_description& v = c.description->variables[index];
-        XMLElement* x = connectors->InsertNewChildElement("ssd:Connector");
-        x->SetAttribute("name", v.name.c_str());
-        x->SetAttribute("kind", std::string(to_string(v.causality)).c_str());
-        if (const char* type = connector_type(v.type)) x->InsertNewChildElement(type);
-      }
+      if (!c.connectors.empty()) write_connectors(e->InsertNewChildElement("ssd:Connectors"), c);
+      if (!c.spec->worker.empty() || !c.placeholders.empty()) write_component_annotation(e, c);
+    }
+  }
+
+  // what is Stride's alone: the worker the component runs on, and values the run fills in
+  static void write_component_annotation(XMLElement* e, const detail::export_component& c) {
+    XMLElement* a = add_annotation(e, k_component_annotation, "stride:Component");
+    if (!c.spec->worker.empty()) a->SetAttribute("worker", c.spec->worker.c_str());
+    for (const auto& v : c.placeholders) {
+      XMLElement* value = a->InsertNewChildElement("stride:Value");
+      value->SetAttribute("name", v.variable->name.c_str());
+      value->SetAttribute("value", v.text.c_str());
+    }
+  }
+
+  static void write_connectors(XMLElement* connectors, const detail::export_component& c) {
+    for (std::size_t index : c.connectors) {
+      const variable_description& v = c.description->variables[index];
+      XMLElement* x = connectors->InsertNewChildElement("ssd:Connector");
+      x->SetAttribute("name", v.name.c_str());
+      x->SetAttribute("kind", std::string(to_string(v.causality)).c_str());
+      if (const char* type = connector_type(v.type)) x->InsertNewChildElement(type);
     }
   }
 
@@ -149,6 +164,34 @@ class ssd_writer {
     XMLElement* simulation = add_annotation(e, k_system_annotation, "stride:Simulation");
     if (s.base_step) simulation->SetAttribute("step", format_seconds(*s.base_step).c_str());
     simulation->SetAttribute("algorithm", std::string(to_string(s.algorithm)).c_str());
+    write_record(simulation, s.record);
+    write_agents(simulation, s.agents);
+  }
+
+  // recording as <record> of the system XML says it, written when it is not the default (every
+  // output at every base step into results.csv), so that it reads back exactly
+  static void write_record(XMLElement* simulation, const record_spec& r) {
+    const record_spec defaults;
+    if (r.enabled && r.signals.empty() && !r.interval && r.file == defaults.file) return;
+    XMLElement* record = simulation->InsertNewChildElement("stride:Record");
+    if (!r.enabled) record->SetAttribute("enabled", "false");
+    if (r.interval) record->SetAttribute("interval", format_seconds(*r.interval).c_str());
+    if (r.file != defaults.file) record->SetAttribute("file", r.file.c_str());
+    for (const auto& signal : r.signals) {
+      record->InsertNewChildElement("stride:Signal")->SetAttribute("name", signal.c_str());
+    }
+  }
+
+  // several agents as <agents> of the system XML says it
+  static void write_agents(XMLElement* simulation, const agents_spec& a) {
+    if (a.count == 0) return;
+    XMLElement* agents = simulation->InsertNewChildElement("stride:Agents");
+    agents->SetAttribute("count", a.count);
+    agents->SetAttribute("mode", a.synchronous ? "synchronous" : "asynchronous");
+    if (a.workers.empty()) return;
+    std::string workers;
+    for (const auto& w : a.workers) workers += (workers.empty() ? "" : " ") + w;
+    agents->SetAttribute("workers", workers.c_str());
   }
 
   const detail::export_plan& plan_;

@@ -279,6 +279,8 @@ void add_components(const element& e, system_structure& system) {
       continue;
     }
     component_spec& c = system.add_component(child.path, child.fmu);
+    c.worker = child.worker;
+    c.parameters = child.stride_values;  // the bindings (applied next) replace or follow them
     c.where = child.where;
   }
 }

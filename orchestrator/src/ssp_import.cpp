@@ -1,6 +1,7 @@
 // The reader of SSP 1.0 system structure descriptions (.ssd): the system tree with its
 // components, connectors, connections, parameter bindings, units, default experiment and
 // Stride's annotation, checked element by element against the SSP's schema (docs/ssp.md).
+#include <functional>
 #include <set>
 
 #include "ssp_model.hpp"
@@ -16,9 +17,37 @@ namespace {
 
 constexpr std::string_view k_system_annotation = "org.stride-sim.system";
 constexpr std::string_view k_connection_annotation = "org.stride-sim.connection";
+constexpr std::string_view k_component_annotation = "org.stride-sim.component";
 
 // where an Annotations element stands: which of Stride's annotations it may hold
-enum class annotated { other, system, connection };
+enum class annotated { other, system, connection, component };
+
+// which of Stride's annotations a type names (other: another tool's)
+annotated annotation_kind(std::string_view type) {
+  if (type == k_system_annotation) return annotated::system;
+  if (type == k_connection_annotation) return annotated::connection;
+  if (type == k_component_annotation) return annotated::component;
+  return annotated::other;
+}
+
+// the element of Stride's namespace an annotation of `kind` holds
+std::string_view stride_local(annotated kind) {
+  return kind == annotated::system       ? "Simulation"
+         : kind == annotated::connection ? "Connection"
+                                         : "Component";
+}
+
+std::string misplaced(annotated kind) {
+  switch (kind) {
+    case annotated::system:
+      return "Stride's system annotation belongs to the ssd:SystemStructureDescription, its top "
+             "ssd:System or its ssd:DefaultExperiment";
+    case annotated::connection:
+      return "Stride's connection annotation belongs to an ssd:Connection";
+    default:
+      return "Stride's component annotation belongs to an ssd:Component";
+  }
+}
 
 class ssd_reader {
  public:
@@ -108,7 +137,8 @@ class ssd_reader {
     x.system = system;
     x.name = file_.required(e, "name");
     if (!path.empty() || !system) {
-      if (const std::string problem = component_name_problem(x.name); !problem.empty()) {
+      // a component may be a replica group's copy, "gait[1]", as Stride's export writes them
+      if (const std::string problem = component_name_problem(x.name, !system); !problem.empty()) {
         file_.fail(e, problem);
       }
     }
@@ -170,9 +200,25 @@ class ssd_reader {
                     {k_ssd_ns, "ParameterBindings", 2},
                     {k_ssd_ns, "Annotations", 3}},
                    [&](const XMLElement& x, std::string_view local) {
-                     if (!read_element_child(x, local, c)) read_annotations(x, annotated::other);
+                     if (read_element_child(x, local, c)) return;
+                     read_annotations(x, annotated::component,
+                                      [&](const XMLElement& s) { read_stride_component(s, c); });
                    });
     return c;
+  }
+
+  // Stride's component annotation: the worker and the values no SSP type holds
+  void read_stride_component(const XMLElement& s, element& c) const {
+    file_.allow_attributes(s, {"worker"});
+    if (file_.attribute(s, "worker")) c.worker = file_.required(s, "worker");
+    file_.children(s, {{k_stride_ns, "Value", 0, true}}, [&](const XMLElement& v, auto) {
+      file_.allow_attributes(v, {"name", "value"});
+      const std::string name = file_.required(v, "name");
+      if (c.description->find(name) == nullptr) {
+        file_.fail(v, "the FMU of '" + c.path + "' has no variable \"" + name + "\"");
+      }
+      c.stride_values.push_back({name, file_.required(v, "value"), file_.at(v)});
+    });
   }
 
   void read_connectors(const XMLElement& e, element& owner) {
@@ -263,7 +309,11 @@ class ssd_reader {
       const auto t = read_transformed(
           file_, x, false, {{k_ssd_ns, "ConnectionGeometry", 1}, {k_ssd_ns, "Annotations", 2}},
           [&](const XMLElement& a, std::string_view local) {
-            if (local == "Annotations") c.delayed = read_annotations(a, annotated::connection);
+            if (local != "Annotations") return;
+            read_annotations(a, annotated::connection, [&](const XMLElement& s) {
+              file_.allow_attributes(s, {"delay"});
+              c.delayed = file_.boolean(s, "delay", false);
+            });
           });
       if (t) c.transform = t->linear;
       system.connections.push_back(std::move(c));
@@ -296,26 +346,20 @@ class ssd_reader {
                    [&](const XMLElement& a, auto) { read_annotations(a, annotated::system); });
   }
 
-  // Annotations of other tools are theirs; Stride's own are read where they belong. Returns
-  // whether a connection's annotation asks for a delay.
-  bool read_annotations(const XMLElement& e, annotated where) {
+  // Annotations of other tools are theirs; Stride's own are read where they belong: the
+  // system's here, a connection's or component's content (the one element of Stride's
+  // namespace) by `read`.
+  void read_annotations(const XMLElement& e, annotated where,
+                        const std::function<void(const XMLElement&)>& read = {}) {
     file_.allow_attributes(e, {});
-    bool delayed = false;
     file_.children(e, {{k_ssc_ns, "Annotation", 0, true}}, [&](const XMLElement& a, auto) {
       file_.allow_attributes(a, {"type"});
-      const std::string type = file_.required(a, "type");
-      const bool system = type == k_system_annotation;
-      if (!system && type != k_connection_annotation) return;
-      if (where != (system ? annotated::system : annotated::connection)) {
-        file_.fail(a, system ? "Stride's system annotation belongs to the "
-                               "ssd:SystemStructureDescription, its top ssd:System or its "
-                               "ssd:DefaultExperiment"
-                             : "Stride's connection annotation belongs to an ssd:Connection");
-      }
-      const XMLElement& content = stride_element(a, system ? "Simulation" : "Connection");
-      if (!system) {
-        file_.allow_attributes(content, {"delay"});
-        delayed = file_.boolean(content, "delay", false);
+      const annotated kind = annotation_kind(file_.required(a, "type"));
+      if (kind == annotated::other) return;
+      if (where != kind) file_.fail(a, misplaced(kind));
+      const XMLElement& content = stride_element(a, stride_local(kind));
+      if (kind != annotated::system) {
+        read(content);
         return;
       }
       if (stride_annotation_) {
@@ -325,7 +369,6 @@ class ssd_reader {
       stride_annotation_ = file_.at(a);
       read_simulation(content);
     });
-    return delayed;
   }
 
   // the one element of Stride's namespace inside a Stride annotation
@@ -350,6 +393,14 @@ class ssd_reader {
       }
       content_.algorithm = *a == "jacobi" ? algorithm_kind::jacobi : algorithm_kind::gauss_seidel;
     }
+    file_.children(s, {{k_stride_ns, "Record", 0}, {k_stride_ns, "Agents", 1}},
+                   [&](const XMLElement& x, std::string_view local) {
+                     if (local == "Record") {
+                       content_.record = read_record_annotation(file_, x);
+                     } else {
+                       content_.agents = read_agents_annotation(file_, x);
+                     }
+                   });
   }
 
   // a unit a connector declares must be one of the SSD's
@@ -388,6 +439,8 @@ system_structure import_ssd(const fs::path& ssd, const std::string& shown, const
   s.stop = content.stop;
   s.base_step = content.step;
   s.algorithm = content.algorithm.value_or(algorithm_kind::gauss_seidel);
+  if (content.record) s.record = *content.record;
+  s.agents = content.agents;
   ssp::flatten(content, s, sink_or_stderr(log));
   if (s.components.empty()) {
     throw validation_error(content.top.origin + "the system has no component (an FMU)");

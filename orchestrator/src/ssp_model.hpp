@@ -90,7 +90,10 @@ struct element {
   std::string name;  ///< as in the SSD
   std::string path;  ///< the dotted Stride name ("" for the top system)
   bool system = false;
-  std::string fmu;                                 ///< component: the component_spec's fmu text
+  std::string fmu;     ///< component: the component_spec's fmu text
+  std::string worker;  ///< component: Stride's component annotation (placement); "" in process
+  /// component: values from Stride's component annotation (placeholders the run substitutes)
+  std::vector<parameter_setting> stride_values;
   const model_description* description = nullptr;  ///< component: its FMU's
   std::vector<connector> connectors;
   /// ParameterBindings in document order, each as the values it supplies
@@ -120,8 +123,15 @@ struct ssd_content {
   std::optional<time_point> stop;
   std::optional<duration> step;
   std::optional<algorithm_kind> algorithm;
+  std::optional<record_spec> record;  ///< Stride's system annotation; nullopt: the default
+  agents_spec agents;                 ///< Stride's system annotation; count 0: one run
   std::string description;
 };
+
+/// Stride's <Record> (in its system annotation): <record> of the system XML, read exactly.
+record_spec read_record_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
+/// Stride's <Agents> (in its system annotation): <agents> of the system XML.
+agents_spec read_agents_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
 
 /// Reads the ParameterBinding children of a ParameterBindings element into `into` (one entry
 /// per binding). `base` resolves relative sources; `units` are the SSD's (Real values may name

@@ -127,24 +127,19 @@ std::vector<std::size_t> expand_variable_group(const model_description& md,
   return result;
 }
 
-namespace {
-
-std::string prefix(const source_location& where) {
-  const std::string s = where.str();
-  return s.empty() ? s : s + ": ";
-}
-
-// the components a connection side names: "comp", or the copies "comp[*]" / "comp[2:3]"
-std::vector<std::size_t> expand_components(const execution& ex, const std::string& comp,
-                                           const std::string& context) {
-  if (const auto index = ex.find_component(comp)) return {*index};
+std::vector<std::size_t> expand_component_group(const std::vector<std::string>& names,
+                                                const std::string& comp,
+                                                const std::string& context) {
+  if (const auto it = std::find(names.begin(), names.end(), comp); it != names.end()) {
+    return {static_cast<std::size_t>(it - names.begin())};
+  }
   const auto open = comp.rfind('[');
   if (open != std::string::npos && comp.ends_with("]")) {
     const std::string base = comp.substr(0, open);
     const std::string inside = comp.substr(open + 1, comp.size() - open - 2);
     std::vector<std::pair<long, std::size_t>> found;
-    for (std::size_t c = 0; c < ex.component_count(); ++c) {
-      const std::string& name = ex.component_at(c).name();
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      const std::string& name = names[c];
       if (!name.starts_with(base + "[") || !name.ends_with("]")) continue;
       found.emplace_back(std::stol(name.substr(base.size() + 1)), c);
     }
@@ -181,6 +176,22 @@ std::vector<std::size_t> expand_components(const execution& ex, const std::strin
     }
   }
   throw validation_error(context + "unknown component '" + comp + "'");
+}
+
+namespace {
+
+std::string prefix(const source_location& where) {
+  const std::string s = where.str();
+  return s.empty() ? s : s + ": ";
+}
+
+// the components a connection side names: "comp", or the copies "comp[*]" / "comp[2:3]"
+std::vector<std::size_t> expand_components(const execution& ex, const std::string& comp,
+                                           const std::string& context) {
+  if (const auto index = ex.find_component(comp)) return {*index};
+  std::vector<std::string> names;
+  for (std::size_t c = 0; c < ex.component_count(); ++c) names.push_back(ex.component_at(c).name());
+  return expand_component_group(names, comp, context);
 }
 
 // one side of a connection, "comp.var" with groups on either part → variables in pairing order

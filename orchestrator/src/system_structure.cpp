@@ -483,15 +483,8 @@ class system_reader {
     r.enabled = boolean(e, "enabled", true);
     if (e->Attribute("interval")) r.interval = seconds(e, "interval");
     if (const auto f = attribute(e, "file")) {
-      const fs::path p(*f);
-      if (f->empty() || p.is_absolute() || *p.lexically_normal().begin() == "..") {
-        fail(e->GetLineNum(),
-             "file=\"" + *f + "\" must be a relative path inside the output folder");
-      }
-      const fs::path normal = p.lexically_normal();
-      if (normal == "manifest.json" || normal == "system.xml") {
-        fail(e->GetLineNum(),
-             "file=\"" + *f + "\" is a file the run writes itself (manifest.json, system.xml)");
+      if (const std::string problem = detail::record_file_problem(*f); !problem.empty()) {
+        fail(e->GetLineNum(), problem);
       }
       r.file = *f;
     }

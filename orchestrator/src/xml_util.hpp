@@ -4,6 +4,7 @@
 
 #include <tinyxml2.h>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -93,6 +94,20 @@ inline std::string describe_error(const tinyxml2::XMLDocument& doc) {
     name += " (" + full.substr(detail + 2) + ")";
   }
   return name;
+}
+
+/// Why `file` cannot be the results file of <record file> (or of Stride's record annotation in
+/// an SSP), or "": it must stay inside the output folder and not be a file the run writes itself.
+inline std::string record_file_problem(const std::string& file) {
+  const std::filesystem::path p(file);
+  if (file.empty() || p.is_absolute() || *p.lexically_normal().begin() == "..") {
+    return "file=\"" + file + "\" must be a relative path inside the output folder";
+  }
+  const std::filesystem::path normal = p.lexically_normal();
+  if (normal == "manifest.json" || normal == "system.xml") {
+    return "file=\"" + file + "\" is a file the run writes itself (manifest.json, system.xml)";
+  }
+  return {};
 }
 
 }  // namespace stride::cosim::detail

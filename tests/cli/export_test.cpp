@@ -123,10 +123,10 @@ TEST_F(export_cli, exporting_the_export_gives_the_same_archive) {
 
 TEST_F(export_cli, refusals_and_usage_errors_say_what_is_wrong) {
   const fs::path walkers = k_models / "walkers.xml";
-  refused("export " + quoted(walkers) + " --ssp walkers.ssp",
+  refused("export " + quoted(walkers) + " --osp walkers-osp",
           "stride: error: " + walkers.string() +
-              ":11: cannot export to SSP: replica group 'walker': the copies' names (\"gait[1]\")");
-  EXPECT_FALSE(fs::exists(scratch.path() / "walkers.ssp"));
+              ":11: cannot export to OSP: replica group 'walker': the copies' names (\"gait[1]\")");
+  EXPECT_FALSE(fs::exists(scratch.path() / "walkers-osp"));
   write("loop.xml", k_loop);
   refused("export loop.xml --osp loop-osp", "cannot export to OSP: the jacobi algorithm");
   refused("export loop.xml", "stride: error: export: give --ssp OUT.ssp or --osp DIR");

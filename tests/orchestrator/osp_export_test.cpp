@@ -121,6 +121,25 @@ TEST_F(osp_export, what_osp_cannot_say_is_refused_naming_it) {
   system_structure s = in_code();
   s.find_component("a")->worker = "far";
   EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: component 'a': runs on worker 'far'"));
+  // what the SSP export keeps in Stride's annotations
+  s = in_code();
+  s.groups.push_back({"w", 2, {s.components.front()}, {}, {}});
+  s.groups.back().components.front().name = "c";
+  EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: replica group 'w': the copies' names "
+                                    "(\"c[1]\") are not valid element names"));
+  s = in_code();
+  s.record.signals = {"a.y"};
+  EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: the recorded signals (a.y) (OSP says "
+                                    "nothing of recording"));
+  s = in_code();
+  s.record.file = "other.csv";
+  EXPECT_THAT(refusal(s), HasSubstr("the results file \"other.csv\" (the OSP importer records"));
+  s = in_code();
+  s.agents.count = 2;
+  EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: <agents>"));
+  s = in_code();
+  s.find_component("a")->parameters.push_back({"gain", "${output_dir}", {}});
+  EXPECT_THAT(refusal(s), HasSubstr("parameter 'a.gain': the placeholder in '${output_dir}'"));
   // no base step given and none declared by the FMU (the fake declares no DefaultExperiment)
   s = in_code();
   s.base_step.reset();

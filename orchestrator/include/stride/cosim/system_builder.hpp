@@ -78,6 +78,13 @@ std::vector<std::vector<std::size_t>> worker_groups(const execution& ex,
                                                     const std::vector<std::string>& workers,
                                                     algorithm_kind kind);
 
+/// The indices into `names` (component names) of the components a connection side names:
+/// "comp", or the copies "comp[*]" / "comp[2:3]" of a replica group, in ascending copy index.
+/// \throws validation_error (`context` prefixed) when none or not all of them exist.
+std::vector<std::size_t> expand_component_group(const std::vector<std::string>& names,
+                                                const std::string& comp,
+                                                const std::string& context);
+
 /// Expands the variable part of a connection side ("var", "var[*]", "var[2:5]") into variable
 /// indices of `md`, in ascending index order. \throws validation_error.
 std::vector<std::size_t> expand_variable_group(const model_description& md,

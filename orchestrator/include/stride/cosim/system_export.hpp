@@ -29,8 +29,9 @@ struct export_report {
 };
 
 /// Writes `system` as the SSP 1.0 archive `archive` (which must end in .ssp): SystemStructure.ssd,
-/// the FMUs under resources/ and the parameter values as resources/parameters.ssv; base step,
-/// algorithm and connection delays as Stride's annotations.
+/// the FMUs under resources/ and the parameter values as resources/parameters.ssv; replica groups
+/// expanded into their copies ("gait[1]", ...); base step, algorithm, recording, agents,
+/// connection delays and workers as Stride's annotations.
 /// \throws validation_error naming the system file, line and what cannot be exported.
 export_report export_ssp(const system_structure& system, const std::filesystem::path& archive,
                          const export_options& options = {});
