@@ -185,7 +185,8 @@ std::string with(const std::string& extra, const std::string& before = "</system
 }
 
 TEST_F(ssp_export, replica_copies_recording_workers_and_agents_read_back_as_written) {
-  // a group of two copies of c, fed by a through a copy range, recorded by signal patterns into another file
+  // a group of two copies of c, fed by a through a copy range, recorded by signal patterns into
+  // another file
   const std::string group = with(R"(<replicate name="w" count="2">
   <component name="c" fmu="fmus/stride_test.fmu" worker="far${copy}">
     <parameter name="gain" value="${copy:0.5;1e3}"/>
