@@ -59,6 +59,22 @@ class export_fixture : public ::testing::Test {
     return load_system_file(write("pair.xml", text));
   }
 
+  // The message with which `export_to` (export_ssp or export_osp) refuses `s` when writing to
+  // `target` in the scratch folder; nothing may be written.
+  template <class Export>
+  std::string refusal(Export export_to, const system_structure& s,
+                      const std::string& target) const {
+    const std::filesystem::path path = scratch.path() / target;
+    try {
+      export_to(s, path, options);
+    } catch (const validation_error& e) {
+      EXPECT_FALSE(std::filesystem::exists(path)) << e.what();
+      return e.what();
+    }
+    ADD_FAILURE() << "exported";
+    return {};
+  }
+
   // a system built in code: a and b of the fake FMU (no file and line in messages)
   system_structure in_code() const {
     system_structure s;
