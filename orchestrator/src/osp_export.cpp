@@ -7,6 +7,7 @@
 
 #include "export_plan.hpp"
 #include "stride/cosim/error.hpp"
+#include "stride/cosim/system_builder.hpp"
 #include "stride/cosim/system_export.hpp"
 
 namespace stride::cosim {
@@ -46,22 +47,17 @@ void check_osp(const detail::export_plan& plan) {
   }
 }
 
-// the system's base step, or as the build takes it: the smallest DefaultExperiment stepSize
+// the system's base step as the build takes it (base_step_of)
 duration base_step(const detail::export_plan& plan) {
-  const system_structure& s = plan.system();
-  if (s.base_step) return *s.base_step;
-  std::optional<double> smallest;
-  for (const auto& c : plan.components()) {
-    if (const auto step = c.description->default_experiment.step_size; step && *step > 0) {
-      smallest = smallest ? std::min(*smallest, *step) : *step;
-    }
-  }
-  if (!smallest) {
-    detail::refuse_export(k_format, s.where,
+  std::vector<const model_description*> models;
+  for (const auto& c : plan.components()) models.push_back(c.description);
+  const std::optional<duration> step = base_step_of(plan.system(), models);
+  if (!step) {
+    detail::refuse_export(k_format, plan.system().where,
                           "no base step (give <simulation step>; no FMU declares a "
                           "DefaultExperiment stepSize)");
   }
-  return duration_from_seconds(*smallest);
+  return *step;
 }
 
 void add_text(XMLElement* parent, const char* name, const std::string& text) {

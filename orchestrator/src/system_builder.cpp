@@ -257,6 +257,19 @@ std::vector<std::vector<std::size_t>> worker_groups(const execution& ex,
   return groups;
 }
 
+std::optional<duration> base_step_of(const system_structure& system,
+                                     const std::vector<const model_description*>& models) {
+  if (system.base_step) return system.base_step;
+  std::optional<double> smallest;
+  for (const model_description* md : models) {
+    if (const auto s = md->default_experiment.step_size; s && *s > 0) {
+      smallest = smallest ? std::min(*smallest, *s) : *s;
+    }
+  }
+  if (!smallest) return std::nullopt;
+  return duration_from_seconds(*smallest);
+}
+
 built_system build_system(const system_structure& structure, const build_options& options) {
   const system_structure system = expand_replicas(structure);
   const log_sink log = options.log ? options.log : stderr_log_sink();
@@ -304,24 +317,15 @@ built_system build_system(const system_structure& structure, const build_options
     components.push_back(std::move(c));
   }
 
-  // base step: given, or the smallest default step of the components
-  duration step{};
-  if (system.base_step) {
-    step = *system.base_step;
-  } else {
-    std::optional<double> smallest;
-    for (const auto& c : components) {
-      if (const auto s = c->model_description().default_experiment.step_size; s && *s > 0) {
-        smallest = smallest ? std::min(*smallest, *s) : *s;
-      }
-    }
-    if (!smallest) {
-      throw validation_error(prefix(system.where) +
-                             "no base step: give <simulation step=\"...\"> (no FMU declares a "
-                             "DefaultExperiment stepSize)");
-    }
-    step = duration_from_seconds(*smallest);
+  std::vector<const model_description*> models;
+  for (const auto& c : components) models.push_back(&c->model_description());
+  const std::optional<duration> base_step = base_step_of(system, models);
+  if (!base_step) {
+    throw validation_error(prefix(system.where) +
+                           "no base step: give <simulation step=\"...\"> (no FMU declares a "
+                           "DefaultExperiment stepSize)");
   }
+  const duration step = *base_step;
   built.base_step = step;
 
   auto ex = std::make_unique<execution>(

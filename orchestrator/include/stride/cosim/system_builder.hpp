@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,11 @@ struct built_system {
   time_point start{};
   time_point stop{};
 };
+
+/// The base step `system` runs at: its own, else the smallest positive DefaultExperiment
+/// stepSize of `models` (its components' FMUs); nullopt when there is neither.
+std::optional<duration> base_step_of(const system_structure& system,
+                                     const std::vector<const model_description*>& models);
 
 /// Expands replica groups, creates the components where their specs place them, applies
 /// parameters, expands and checks connections, freezes the execution.
