@@ -11,22 +11,6 @@ namespace stride::cosim::fmi3 {
 
 namespace {
 
-std::string status_name(fmi3Status s) {
-  switch (s) {
-    case fmi3OK:
-      return "fmi3OK";
-    case fmi3Warning:
-      return "fmi3Warning";
-    case fmi3Discard:
-      return "fmi3Discard";
-    case fmi3Error:
-      return "fmi3Error";
-    case fmi3Fatal:
-      return "fmi3Fatal";
-  }
-  return "status " + std::to_string(static_cast<int>(s));
-}
-
 class fmi3_component final : public component {
  public:
   fmi3_component(std::shared_ptr<const void> owner, const binary& bin, std::string name,
@@ -185,17 +169,7 @@ class fmi3_component final : public component {
   static void logger(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category,
                      fmi3String message) {
     auto* self = static_cast<fmi3_component*>(env);
-    if (self == nullptr || message == nullptr) return;
-    log_level level = log_level::info;
-    if (status == fmi3Warning) level = log_level::warning;
-    if (status == fmi3Error || status == fmi3Fatal || status == fmi3Discard) {
-      level = log_level::error;
-    }
-    try {
-      self->log_(level, self->name_, category ? category : "", message);
-    } catch (...) {
-      // a throwing sink must not unwind through C code
-    }
+    if (self != nullptr) forward_log(self->log_, self->name_, status, category, message);
   }
 
   bool may_terminate() const { return stepping_ && !terminated_ && !failed_ && !fatal_; }

@@ -38,12 +38,19 @@ std::shared_ptr<binary> load(const fs::path& file, const fs::path& dir, const st
   b->library_mutex = &library_mutex;
   b->description = parse_description(xml, where + "!modelDescription.xml");
   const auto& md = b->description.scalar;
-  if (!md.co_simulation) {
+  if (!md.co_simulation && !md.model_exchange) {
     throw fmu_import_error(where +
-                           ": not a Co-Simulation FMU (no <CoSimulation> element); FMI 3.0 "
-                           "Model Exchange and Scheduled Execution are not supported");
+                           ": neither <CoSimulation> nor <ModelExchange> is declared (FMI 3.0 "
+                           "Scheduled Execution is not supported)");
   }
-  const std::string& id = md.co_simulation->model_identifier;
+  if (md.co_simulation && md.model_exchange &&
+      md.co_simulation->model_identifier != md.model_exchange->model_identifier) {
+    throw fmu_import_error(where +
+                           ": different Co-Simulation and Model Exchange binaries; only one "
+                           "binary per FMU is supported");
+  }
+  const std::string& id =
+      md.co_simulation ? md.co_simulation->model_identifier : md.model_exchange->model_identifier;
   if (!is_identifier(id)) {
     throw fmu_import_error(where + ": modelIdentifier \"" + id +
                            "\" is not a C identifier (it names the binary)");
@@ -68,7 +75,13 @@ std::shared_ptr<binary> load(const fs::path& file, const fs::path& dir, const st
 #define STRIDE_RESOLVE(name)                  \
   b->fn.name = reinterpret_cast<name##TYPE*>( \
       cosim::detail::required_symbol(::dlsym(b->library, #name), #name, binary_name));
-  STRIDE_FMI3_IMPORTED_FUNCTIONS(STRIDE_RESOLVE)
+  STRIDE_FMI3_COMMON_FUNCTIONS(STRIDE_RESOLVE)
+  if (md.co_simulation) {
+    STRIDE_FMI3_CS_FUNCTIONS(STRIDE_RESOLVE)
+  }
+  if (md.model_exchange) {
+    STRIDE_FMI3_ME_FUNCTIONS(STRIDE_RESOLVE)
+  }
 #undef STRIDE_RESOLVE
   const char* version = b->fn.fmi3GetVersion();
   if (version == nullptr || std::string(version) != "3.0") {
@@ -76,6 +89,37 @@ std::shared_ptr<binary> load(const fs::path& file, const fs::path& dir, const st
                            "\", not \"3.0\"");
   }
   return b;
+}
+
+std::string status_name(fmi3Status s) {
+  switch (s) {
+    case fmi3OK:
+      return "fmi3OK";
+    case fmi3Warning:
+      return "fmi3Warning";
+    case fmi3Discard:
+      return "fmi3Discard";
+    case fmi3Error:
+      return "fmi3Error";
+    case fmi3Fatal:
+      return "fmi3Fatal";
+  }
+  return "status " + std::to_string(static_cast<int>(s));
+}
+
+void forward_log(const log_sink& sink, const std::string& component, fmi3Status status,
+                 fmi3String category, fmi3String message) noexcept {
+  if (message == nullptr) return;
+  log_level level = log_level::info;
+  if (status == fmi3Warning) level = log_level::warning;
+  if (status == fmi3Error || status == fmi3Fatal || status == fmi3Discard) {
+    level = log_level::error;
+  }
+  try {
+    sink(level, component, category ? category : "", message);
+  } catch (...) {
+    // a throwing sink must not unwind through C code
+  }
 }
 
 }  // namespace stride::cosim::fmi3

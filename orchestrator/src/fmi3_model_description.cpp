@@ -161,6 +161,7 @@ struct reader : detail::md_reader_base {
     md.generation_date_and_time = attribute_or(root, "generationDateAndTime");
     md.has_model_exchange = root->FirstChildElement("ModelExchange") != nullptr;
     if (const auto* cs = root->FirstChildElement("CoSimulation")) read_cosimulation(cs, d);
+    if (const auto* me = root->FirstChildElement("ModelExchange")) read_model_exchange(me, d);
     if (const auto* de = root->FirstChildElement("DefaultExperiment")) {
       md.default_experiment.start_time = parse_double(de, "startTime");
       md.default_experiment.stop_time = parse_double(de, "stopTime");
@@ -182,7 +183,10 @@ struct reader : detail::md_reader_base {
       check_start(d.variables[i]);
       add_ports(elements[i], i, d);
     }
-    if (const auto* ms = root->FirstChildElement("ModelStructure")) read_outputs(ms, d);
+    if (const auto* ms = root->FirstChildElement("ModelStructure")) {
+      read_outputs(ms, d);
+      read_continuous_structure(ms, d);
+    }
     return d;
   }
 
@@ -203,6 +207,48 @@ struct reader : detail::md_reader_base {
     cap.provides_directional_derivative = parse_bool(cs, "providesDirectionalDerivatives");
     d.has_event_mode = parse_bool(cs, "hasEventMode");
     d.scalar.co_simulation = cap;
+  }
+
+  void read_model_exchange(const tinyxml2::XMLElement* me, description& d) const {
+    model_exchange_capabilities cap;
+    cap.model_identifier = attribute_or(me, "modelIdentifier");
+    if (cap.model_identifier.empty()) {
+      fail(me->GetLineNum(), "<ModelExchange> has no modelIdentifier");
+    }
+    cap.needs_execution_tool = parse_bool(me, "needsExecutionTool");
+    // 3.0 asks for the call when needed; 2.0 said when it was not
+    cap.completed_integrator_step_not_needed = !parse_bool(me, "needsCompletedIntegratorStep");
+    cap.can_be_instantiated_only_once_per_process =
+        parse_bool(me, "canBeInstantiatedOnlyOncePerProcess");
+    cap.can_get_and_set_fmu_state = parse_bool(me, "canGetAndSetFMUState");
+    cap.can_serialize_fmu_state = parse_bool(me, "canSerializeFMUState");
+    cap.provides_directional_derivative = parse_bool(me, "providesDirectionalDerivatives");
+    d.scalar.model_exchange = cap;
+  }
+
+  // The continuous-state derivatives in the order of the state vector, and the event
+  // indicators; both are Float64 and an array counts element by element.
+  void read_continuous_structure(const tinyxml2::XMLElement* ms, description& d) const {
+    const auto float64_ports = [&](const tinyxml2::XMLElement* e, const char* tag) {
+      const auto vr = attribute(e, "valueReference");
+      if (!vr) fail(e->GetLineNum(), std::string("<") + tag + "> without valueReference");
+      const auto ports = ports_of(d, parse_reference(*vr, e->GetLineNum(), tag), e->GetLineNum());
+      const variable& v = d.variables[d.ports[ports.front()].variable];
+      if (v.kind != kind::float64) {
+        fail(e->GetLineNum(), std::string("<") + tag + "> names variable \"" + v.name + "\", a " +
+                                  std::string(to_string(v.kind)) + ", not a Float64");
+      }
+      return ports;
+    };
+    for (auto* e = ms->FirstChildElement("ContinuousStateDerivative"); e != nullptr;
+         e = e->NextSiblingElement("ContinuousStateDerivative")) {
+      const auto ports = float64_ports(e, "ContinuousStateDerivative");
+      d.scalar.derivatives.insert(d.scalar.derivatives.end(), ports.begin(), ports.end());
+    }
+    for (auto* e = ms->FirstChildElement("EventIndicator"); e != nullptr;
+         e = e->NextSiblingElement("EventIndicator")) {
+      d.scalar.number_of_event_indicators += float64_ports(e, "EventIndicator").size();
+    }
   }
 
   variable read_variable(const tinyxml2::XMLElement* e) const {

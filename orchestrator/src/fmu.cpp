@@ -417,7 +417,16 @@ void* fmu::symbol(const char* name) const noexcept {
 std::unique_ptr<component> fmu::instantiate(const std::string& instance_name,
                                             const instance_options& options) {
   if (options.model_exchange || !pimpl_->md.co_simulation) {
-    return instantiate_model_exchange(shared_from_this(), instance_name, options);
+    if (!pimpl_->md.model_exchange) {
+      throw component_error("component '" + instance_name + "': " + pimpl_->file.string() +
+                            " has no <ModelExchange> interface (kind=\"model-exchange\")");
+    }
+    auto instance =
+        pimpl_->fmi3
+            ? fmi3::instantiate_model_exchange(shared_from_this(), *pimpl_->fmi3, instance_name,
+                                               options)
+            : instantiate_fmi2_model_exchange(shared_from_this(), instance_name, options);
+    return run_model_exchange(std::move(instance), instance_name, options);
   }
   const auto& cs = *pimpl_->md.co_simulation;
   if (cs.can_be_instantiated_only_once_per_process && pimpl_->instances > 0) {

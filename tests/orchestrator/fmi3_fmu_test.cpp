@@ -1,5 +1,6 @@
 // Loading FMI 3.0 archives through fmu::load: the dispatch on fmiVersion, the binary folder,
-// and the refusals (no CoSimulation, clocks, missing binary) naming the FMU file and the feature.
+// and the refusals (no interface Stride runs, missing functions, clocks, missing binary) naming the
+// FMU file and the feature.
 #include "fmi3_fmu.hpp"
 
 #include <gmock/gmock.h>
@@ -53,15 +54,34 @@ TEST_F(fmi3_fmu_test, the_extraction_lives_as_long_as_an_instance) {
   EXPECT_FALSE(fs::exists(dir));
 }
 
-TEST_F(fmi3_fmu_test, no_co_simulation_is_refused_naming_the_file) {
+// the kinds FMU's binary offers Co-Simulation only: declared as Model Exchange, it loads (it
+// exports every 3.0 function, the Model Exchange ones as refusals) and its refusal to
+// instantiate stops the run naming the component and the file
+TEST_F(fmi3_fmu_test, model_exchange_refused_by_the_binary_names_the_component) {
   const fs::path file = scratch.path() / "me_only.fmu";
   auto xml = test::fmi3_kinds_xml();
   xml = test::replaced(xml, "<CoSimulation ", "<ModelExchange ");
   xml = test::replaced(xml, " hasEventMode=\"true\"", "");
   test::write_fmi3_kinds_variant(file, xml);
+  const auto f = fmu::load(file, test::extract_into(scratch.path()));
+  try {
+    f->instantiate("k");
+    FAIL() << "a Co-Simulation binary instantiated as Model Exchange";
+  } catch (const component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("component 'k': fmi3InstantiateModelExchange of " +
+                                    fs::absolute(file).string() + " failed"));
+  }
+}
+
+TEST_F(fmi3_fmu_test, neither_interface_is_refused_naming_the_file) {
+  const fs::path file = scratch.path() / "scheduled.fmu";
+  auto xml = test::fmi3_kinds_xml();
+  xml = test::replaced(xml, "<CoSimulation ", "<ScheduledExecution ");
+  xml = test::replaced(xml, " hasEventMode=\"true\"", "");
+  test::write_fmi3_kinds_variant(file, xml);
   const auto e = load_error(file);
-  EXPECT_THAT(e, HasSubstr(file.string() + ": not a Co-Simulation FMU (no <CoSimulation>"));
-  EXPECT_THAT(e, HasSubstr("Model Exchange and Scheduled Execution are not supported"));
+  EXPECT_THAT(e, HasSubstr(file.string() + ": neither <CoSimulation> nor <ModelExchange>"));
+  EXPECT_THAT(e, HasSubstr("Scheduled Execution is not supported"));
 }
 
 TEST_F(fmi3_fmu_test, a_clock_is_refused_naming_the_file_and_the_variable) {

@@ -4,16 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <tuple>
 
-#include "stride/cosim/archive.hpp"
+#include "me_fixture.hpp"
 #include "stride/cosim/error.hpp"
-#include "stride/cosim/fmu.hpp"
-#include "zip_writer.hpp"
 
 namespace stride::cosim {
 namespace {
@@ -21,73 +17,11 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class me_component_test : public ::testing::Test {
- protected:
-  // packs me_fmus/<model>.xml and the built me_<model>.so into an FMU
-  // `edit` replaces its first string by its second in the model description (when non-empty)
-  std::shared_ptr<fmu> load(const std::string& model, const std::string& library,
-                            const std::pair<std::string, std::string>& edit = {}) {
-    std::string description = read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (model + ".xml"));
-    if (!edit.first.empty()) {
-      const auto at = description.find(edit.first);
-      EXPECT_NE(at, std::string::npos) << edit.first;
-      if (at != std::string::npos) description.replace(at, edit.first.size(), edit.second);
-    }
-    const fs::path file = dir_.path() / (model + std::to_string(++loaded_) + ".fmu");
-    test::write_zip(file, {{"modelDescription.xml", description},
-                           {"binaries/linux64/me_" + model + ".so", read_text(library)}});
-    return fmu::load(file);
-  }
-
-  temp_dir dir_{"stride-me-test-"};
-  int loaded_ = 0;
-};
-
-struct run_trace {
-  std::vector<double> t;
-  std::vector<value_block> outputs;
-};
-
-// setup, initialization and `steps` communication steps of `dt` from `start`
-void initialise(component& c, double stop) {
-  c.setup(time_from_seconds(0), time_from_seconds(stop));
-  c.enter_initialization();
-  c.exit_initialization();
-}
-
-run_trace advance(component& c, const variable_refs& outs, double from, double dt, int steps) {
-  c.expose({}, outs);
-  run_trace trace;
-  for (int i = 0; i < steps; ++i) {
-    const time_point t = time_from_seconds(from) + i * duration_from_seconds(dt);
-    value_block out;
-    out.resize_for(outs);
-    EXPECT_EQ(c.step(t, duration_from_seconds(dt), {}, out), step_result::complete);
-    trace.t.push_back(to_seconds(t + duration_from_seconds(dt)));
-    trace.outputs.push_back(out);
-  }
-  return trace;
-}
-
-model_exchange_options cvode(double rtol) {
-  model_exchange_options o;
-  o.rtol = rtol;
-  o.atol = rtol * 1e-3;
-  return o;
-}
-
-std::unique_ptr<component> make(fmu& f, const std::string& name, model_exchange_options o) {
-  instance_options io;
-  io.model_exchange = o;
-  return f.instantiate(name, io);
-}
+using test::advance;
+using test::cvode;
+using test::initialise;
+using test::make;
+using me_component_test = test::me_fixture;
 
 // over one communication step: CVODE restarts at every communication point, so over many the
 // global error adds up (docs/model-exchange.md)
