@@ -422,10 +422,9 @@ std::unique_ptr<component> fmu::instantiate(const std::string& instance_name,
                             " has no <ModelExchange> interface (kind=\"model-exchange\")");
     }
     auto instance =
-        pimpl_->fmi3
-            ? fmi3::instantiate_model_exchange(shared_from_this(), *pimpl_->fmi3, instance_name,
-                                               options)
-            : instantiate_fmi2_model_exchange(shared_from_this(), instance_name, options);
+        pimpl_->fmi3 ? fmi3::instantiate_model_exchange(shared_from_this(), *pimpl_->fmi3,
+                                                        instance_name, options)
+                     : instantiate_fmi2_model_exchange(shared_from_this(), instance_name, options);
     return run_model_exchange(std::move(instance), instance_name, options);
   }
   const auto& cs = *pimpl_->md.co_simulation;

@@ -8,7 +8,7 @@
 #    them, as functions: for 2.0 the 25 common ones plus the 9 of Co-Simulation and/or the 10 of
 #    Model Exchange (one binary per distinct modelIdentifier of <CoSimulation> and
 #    <ModelExchange>, each with the functions of the elements naming it); for 3.0 all 75
-#    functions, whatever the interface types, of CoSimulation@modelIdentifier;
+#    functions, whatever the interface types, in each binary the two elements name;
 #  - every .so in that folder needs (readelf -d NEEDED) only libc, libm, libpthread, libdl,
 #    librt, ld-linux-x86-64, or libraries shipped in the same folder of the FMU.
 # Unpacks with `unzip` when present, else with `cmake -E tar` ($CMAKE_COMMAND or cmake).
@@ -88,8 +88,7 @@ functions3=(fmi3GetVersion fmi3SetDebugLogging fmi3InstantiateModelExchange
 
 # the binaries to check: model identifier -> the interface types whose functions it must export
 cs_identifier=$(model_identifier_of CoSimulation)
-me_identifier=""
-((version == 3)) || me_identifier=$(model_identifier_of ModelExchange)
+me_identifier=$(model_identifier_of ModelExchange)
 [[ -n $cs_identifier || -n $me_identifier ]] ||
   { error "[exports.archive] no CoSimulation@modelIdentifier or ModelExchange@modelIdentifier"; exit 1; }
 declare -A interfaces=()

@@ -94,7 +94,7 @@ std::optional<std::map<std::string, bool, std::less<>>> dynamic_symbols(std::str
 }  // namespace
 
 void check_archive_ties3(reporter& out, const archive_listing& archive,
-                         std::string_view model_identifier) {
+                         std::string_view model_identifier, std::string_view me_model_identifier) {
   // FMI 2.0 platform folders, which an FMI 3.0 importer does not look into
   static const std::map<std::string_view, std::string_view> k_fmi2_folders = {
       {"linux64", "x86_64-linux"},
@@ -102,7 +102,8 @@ void check_archive_ties3(reporter& out, const archive_listing& archive,
       {"win64", "x86_64-windows"},
       {"win32", "x86-windows"},
       {"darwin64", "x86_64-darwin"}};
-  const std::array<binary_name, 1> binaries{{{model_identifier, "CoSimulation"}}};
+  const std::array<binary_name, 2> binaries{
+      {{model_identifier, "CoSimulation"}, {me_model_identifier, "ModelExchange"}}};
   check_binary_layout(
       out, archive, binaries,
       {"x86_64-linux", k_fmi2_folders, "an FMI 2.0 platform folder", "FMI 3.0", "fmi3."});

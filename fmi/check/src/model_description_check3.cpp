@@ -80,8 +80,13 @@ void check_model_description3(reporter& out, const XMLElement& root, const archi
   check_default_experiment(shared, root.FirstChildElement("DefaultExperiment"));
   check_model_variables3(md, root.FirstChildElement("ModelVariables"));
   check_model_structure3(md, root.FirstChildElement("ModelStructure"));
-  if (archive != nullptr) check_archive_ties3(out, *archive, md.model_identifier);
-  if (model_identifier != nullptr) *model_identifier = md.model_identifier;
+  if (archive != nullptr) {
+    check_archive_ties3(out, *archive, md.model_identifier, md.me_model_identifier);
+  }
+  // the binary whose exports are checked: either interface's (3.0 binaries export everything)
+  if (model_identifier != nullptr) {
+    *model_identifier = md.model_identifier.empty() ? md.me_model_identifier : md.model_identifier;
+  }
 }
 
 }  // namespace stride::fmi_check::detail

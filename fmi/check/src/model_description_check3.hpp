@@ -76,7 +76,8 @@ struct md3_context {
   explicit md3_context(reporter& r) : out(r) {}
 
   reporter& out;
-  std::string model_identifier;  // of <CoSimulation>, when a C identifier
+  std::string model_identifier;     // of <CoSimulation>, when a C identifier
+  std::string me_model_identifier;  // of <ModelExchange>, when a C identifier
   /// Unit name -> its DisplayUnit names.
   std::map<std::string, std::set<std::string, std::less<>>, std::less<>> units;
   /// TypeDefinitions name -> element (Float64Type, EnumerationType, ...).
@@ -117,7 +118,7 @@ void check_model_structure3(md3_context& md, const XMLElement* ms);
 // --- the archive next to the description (archive_check3.cpp)
 /// binaries/x86_64-linux/<modelIdentifier>.so, and no FMI 2.0 platform folder.
 void check_archive_ties3(reporter& out, const archive_listing& archive,
-                         std::string_view model_identifier);
+                         std::string_view model_identifier, std::string_view me_model_identifier);
 /// The dynamic symbols of the binary `entry` (the bytes of an ELF shared object) include every
 /// function of the FMI 3.0 C API, as functions.
 void check_exports3(reporter& out, std::string_view entry, std::string_view bytes);

@@ -139,26 +139,22 @@ void check_root_attributes3(md3_context& md, const XMLElement& root) {
 
 void check_interfaces3(md3_context& md, const XMLElement& root) {
   if (const XMLElement* me = root.FirstChildElement("ModelExchange")) {
-    check_interface(md, *me, k_model_exchange_flags, {});
-    md.out.warning("fmi3.interface.not_usable",
-                   at(*me) +
-                       ": <ModelExchange> is not usable by Stride, which imports "
-                       "Co-Simulation only");
+    md.me_model_identifier = check_interface(md, *me, k_model_exchange_flags, {});
   }
   if (const XMLElement* se = root.FirstChildElement("ScheduledExecution")) {
     check_interface(md, *se, {}, {});
     md.out.warning("fmi3.interface.not_usable",
                    at(*se) +
                        ": <ScheduledExecution> is not usable by Stride, which imports "
-                       "Co-Simulation only");
+                       "Co-Simulation and Model Exchange");
   }
   const XMLElement* cs = root.FirstChildElement("CoSimulation");
-  if (cs == nullptr) {
-    md.out.error("fmi3.cosim.missing",
-                 "there is no <CoSimulation> element: not a Co-Simulation FMU");
-    return;
+  if (cs != nullptr) {
+    md.model_identifier = check_interface(md, *cs, k_co_simulation_flags, k_co_simulation_unsigned);
+  } else if (root.FirstChildElement("ModelExchange") == nullptr) {
+    md.out.error("fmi3.interface.missing",
+                 "there is neither a <CoSimulation> nor a <ModelExchange> element");
   }
-  md.model_identifier = check_interface(md, *cs, k_co_simulation_flags, k_co_simulation_unsigned);
 }
 
 void check_unit_definitions3(md3_context& md, const XMLElement* ud) {

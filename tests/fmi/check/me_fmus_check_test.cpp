@@ -5,6 +5,7 @@
 // libraries also implement Co-Simulation, pass declaring both.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -169,5 +170,72 @@ TEST(fmi_check_me_exports, co_simulation_binary_declared_as_model_exchange_is_re
     EXPECT_NE(result.output.find(f), std::string::npos) << f << "\n" << result.output;
   }
 }
+
+// FMI 3.0 Model Exchange: the ball and the stair behind the 3.0 wrapper pass the checker and the
+// export check (which wants all 75 functions of the 3.0 API); without its <ModelExchange> the
+// description names no interface at all
+class fmi_check_me3_fmus : public fmi_check_me_fmus {
+ protected:
+  fs::path pack3(const me_fmu& m, std::string description) {
+    zip_entry md;
+    md.name = "modelDescription.xml";
+    md.content = std::move(description);
+    zip_entry so;
+    so.name = "binaries/x86_64-linux/me3_" + m.model + ".so";
+    so.from_file = m.library;
+    const fs::path file = dir_.path() / (m.model + "3_" + std::to_string(++count_) + ".fmu");
+    check::test::write_zip(file, {md, so});
+    return file;
+  }
+  static std::string description3(const me_fmu& m) {
+    return check::test::read_text(fs::path(STRIDE_ME_FMU_SOURCES) / (m.model + "3.xml"));
+  }
+};
+
+TEST_P(fmi_check_me3_fmus, checker_and_export_check_find_nothing) {
+  const fs::path fmu = pack3(GetParam(), description3(GetParam()));
+  const auto findings = check::check_fmu(fmu);
+  EXPECT_TRUE(findings.empty()) << describe(fmu, findings);
+  const auto cli = run_command(shell_quote(STRIDE_FMU_CHECK_CLI) + " " + shell_quote(fmu.string()));
+  EXPECT_EQ(cli.exit_code, 0) << cli.output;
+  const auto result = run_command(
+      "CMAKE_COMMAND=" + shell_quote(STRIDE_CMAKE_COMMAND) + " " + shell_quote(STRIDE_BASH) + " " +
+      shell_quote(STRIDE_EXPORTS_SCRIPT) + " " + shell_quote(fmu.string()) + " 3");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("75"), std::string::npos) << result.output;
+}
+
+TEST_P(fmi_check_me3_fmus, a_description_without_an_interface_is_an_error) {
+  std::string description = description3(GetParam());
+  const auto me = description.find("<ModelExchange");
+  ASSERT_NE(me, std::string::npos);
+  description.erase(me, description.find("/>", me) + 2 - me);
+  const fs::path fmu = pack3(GetParam(), description);
+  const auto findings = check::check_fmu(fmu);
+  EXPECT_TRUE(std::any_of(findings.begin(), findings.end(), [](const check::finding& f) {
+    return f.rule == "fmi3.interface.missing";
+  })) << describe(fmu, findings);
+}
+
+// the derivative is listed, not the state: the 3.0 ModelStructure rule says so
+TEST_P(fmi_check_me3_fmus, a_state_listed_as_its_derivative_is_an_error) {
+  std::string description = description3(GetParam());
+  const std::string derivative = "<ContinuousStateDerivative valueReference=\"1\"/>";
+  const auto at = description.find(derivative);
+  ASSERT_NE(at, std::string::npos);
+  description.replace(at, derivative.size(), "<ContinuousStateDerivative valueReference=\"0\"/>");
+  const fs::path fmu = pack3(GetParam(), description);
+  const auto findings = check::check_fmu(fmu);
+  EXPECT_TRUE(std::any_of(findings.begin(), findings.end(), [](const check::finding& f) {
+    return f.rule == "fmi3.derivatives.value_reference";
+  })) << describe(fmu, findings);
+}
+
+INSTANTIATE_TEST_SUITE_P(me_fmus, fmi_check_me3_fmus,
+                         testing::Values(me_fmu{"ball", STRIDE_ME3_BALL},
+                                         me_fmu{"stair", STRIDE_ME3_STAIR}),
+                         [](const testing::TestParamInfo<me_fmu>& info) {
+                           return info.param.model;
+                         });
 
 }  // namespace

@@ -1,8 +1,8 @@
 /* The FMI 3.0 Model Exchange interface around one me_model.h model (test FMUs only), so that the
  * same equations run through both standards. One value-reference space for all types, as 3.0
  * has: Float64 k is vr k, Int32 k is vr 100 + k, Boolean k is vr 200 + k, String k is vr
- * 300 + k. The other types of the standard are refused with fmi3Error. Model Exchange only: the
- * Co-Simulation functions are absent, as in an FMU that lacks that interface. */
+ * 300 + k, the independent variable time is vr 999. The other types of the standard are refused
+ * with fmi3Error; so are the other interfaces (me_fmu3_refusals.c). */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +14,7 @@
 #define VR_INT32 100
 #define VR_BOOLEAN 200
 #define VR_STRING 300
+#define VR_TIME 999
 
 typedef struct {
   me_data m;
@@ -107,8 +108,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
   me_equations(&s->m);
   for (size_t k = 0; k < n; ++k) {
     const int i = index_of(vr[k], 0, ME_MAX_REALS);
-    if (i < 0) return fmi3Error;
-    v[k] = s->m.r[i];
+    if (i < 0 && vr[k] != VR_TIME) return fmi3Error;
+    v[k] = i < 0 ? s->m.time : s->m.r[i];
   }
   return fmi3OK;
 }
