@@ -4,10 +4,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "me_fixture.hpp"
 #include "stride/cosim/error.hpp"
+#include "stride/cosim/execution.hpp"
+#include "stride/cosim/system_builder.hpp"
 
 namespace stride::cosim {
 namespace {
@@ -217,6 +220,37 @@ TEST_F(fmi3_me_component_test, a_model_exchange_only_fmu_needs_no_kind) {
   variable_refs level;
   level.integers = {4};
   EXPECT_EQ(advance(*c, level, 0.0, 0.35, 1).outputs[0].integers[0], 1);
+}
+
+// in a system: no kind needed, and a checkpoint of the execution resumes bit for bit
+TEST_F(fmi3_me_component_test, a_system_with_a_3_0_model_exchange_fmu_resumes_byte_identically) {
+  system_structure s;
+  s.stop = time_from_seconds(3.0);
+  s.base_step = duration_from_seconds(0.01);
+  s.add_component("ball", pack("ball", STRIDE_ME3_BALL, {}, test::standard::fmi3).string());
+  const auto run = [&](const std::vector<std::byte>* image, std::vector<std::byte>* save) {
+    auto built = build_system(s);
+    auto& ex = *built.execution;
+    const std::size_t c = *ex.find_component("ball");
+    const auto h = ex.observe({c, *ex.component_at(c).model_description().index_of("h")});
+    ex.initialize(built.stop);
+    if (image != nullptr) ex.restore_state_bytes(*image);
+    if (save != nullptr) {
+      ex.simulate_until(time_from_seconds(1.2));
+      *save = ex.save_state_bytes();
+    }
+    std::vector<double> heights;
+    for (int i = 0; i < 100; ++i) {
+      ex.step();
+      heights.push_back(ex.real_value(h));
+    }
+    return heights;
+  };
+  std::vector<std::byte> image;
+  const auto expected = run(nullptr, &image);
+  const auto resumed = run(&image, nullptr);
+  EXPECT_EQ(resumed, expected);
+  EXPECT_GT(*std::max_element(expected.begin(), expected.end()), 0.01);  // still bouncing
 }
 
 }  // namespace

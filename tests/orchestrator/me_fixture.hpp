@@ -35,6 +35,11 @@ class me_fixture : public ::testing::Test {
   std::shared_ptr<fmu> load(const std::string& model, const std::string& library,
                             const std::pair<std::string, std::string>& edit = {},
                             standard s = standard::fmi2) {
+    return fmu::load(pack(model, library, edit, s));
+  }
+  std::filesystem::path pack(const std::string& model, const std::string& library,
+                             const std::pair<std::string, std::string>& edit = {},
+                             standard s = standard::fmi2) {
     const bool three = s == standard::fmi3;
     std::string description = read_text(std::filesystem::path(STRIDE_ME_FMU_SOURCES) /
                                         (model + (three ? "3" : "") + ".xml"));
@@ -47,7 +52,7 @@ class me_fixture : public ::testing::Test {
                                      : "binaries/linux64/me_" + model + ".so";
     const auto file = dir_.path() / (model + std::to_string(++loaded_) + ".fmu");
     write_zip(file, {{"modelDescription.xml", description}, {binary, read_text(library)}});
-    return fmu::load(file);
+    return file;
   }
   std::shared_ptr<fmu> load3(const std::string& model, const std::string& library,
                              const std::pair<std::string, std::string>& edit = {}) {
