@@ -59,18 +59,24 @@ std::unique_ptr<component> start(fmu& f, runner r, const variable_refs& outputs)
   return c;
 }
 
-void communication_step(benchmark::State& state, const std::string& model,
-                        const std::string& library, runner r, const variable_refs& outputs) {
-  const temp_dir dir("stride-me-bench-");
-  const auto f = both_kinds(dir, model, library);
-  auto c = start(*f, r, outputs);
+// The ball behind the FMI 3.0 wrapper (Model Exchange only).
+std::shared_ptr<fmu> ball3(const temp_dir& dir) {
+  const fs::path file = dir.path() / "ball3.fmu";
+  test::write_zip(
+      file, {{"modelDescription.xml", read_text(fs::path(STRIDE_ME_FMU_SOURCES) / "ball3.xml")},
+             {"binaries/x86_64-linux/me3_ball.so", read_text(STRIDE_ME3_BALL)}});
+  return fmu::load(file);
+}
+
+void run_steps(benchmark::State& state, fmu& f, runner r, const variable_refs& outputs) {
+  auto c = start(f, r, outputs);
   time_point t{};
   value_block out;
   out.resize_for(outputs);
   for (auto _ : state) {
     if (t + k_step > k_window) {
       state.PauseTiming();
-      c = start(*f, r, outputs);
+      c = start(f, r, outputs);
       t = {};
       state.ResumeTiming();
     }
@@ -78,6 +84,12 @@ void communication_step(benchmark::State& state, const std::string& model,
     t += k_step;
   }
   benchmark::DoNotOptimize(out.reals.data());
+}
+
+void communication_step(benchmark::State& state, const std::string& model,
+                        const std::string& library, runner r, const variable_refs& outputs) {
+  const temp_dir dir("stride-me-bench-");
+  run_steps(state, *both_kinds(dir, model, library), r, outputs);
 }
 
 variable_refs reals(std::initializer_list<std::uint32_t> refs) {
@@ -96,6 +108,12 @@ void chain(benchmark::State& state, runner r) {
 BENCHMARK_CAPTURE(ball, cvode_bdf, runner::cvode_bdf);
 BENCHMARK_CAPTURE(ball, cvode_adams, runner::cvode_adams);
 BENCHMARK_CAPTURE(ball, co_simulation_rk4, runner::co_simulation);
+// the same equations through FMI 3.0 (h and v are ports 0 and 2 there too)
+void ball_fmi3(benchmark::State& state) {
+  const temp_dir dir("stride-me-bench-");
+  run_steps(state, *ball3(dir), runner::cvode_bdf, reals({0, 2}));
+}
+BENCHMARK(ball_fmi3);
 BENCHMARK_CAPTURE(chain, cvode_bdf, runner::cvode_bdf);
 BENCHMARK_CAPTURE(chain, cvode_adams, runner::cvode_adams);
 BENCHMARK_CAPTURE(chain, co_simulation_rk4, runner::co_simulation);
