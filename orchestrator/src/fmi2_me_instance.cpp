@@ -3,6 +3,7 @@
 #include <cstdarg>
 #include <cstdlib>
 
+#include "fmi2_calls.hpp"
 #include "fmi2_log.hpp"
 #include "me_component.hpp"
 #include "required_symbol.hpp"
@@ -162,6 +163,14 @@ class fmi2_me_instance final : public detail::me_instance {
     throw detail::fmu_call_failure(std::string(function) + " returned " +
                                    std::string(fmi2::to_string(static_cast<fmi2::status>(s))));
   }
+  // check() as the shared calls of fmi2_calls.hpp take it
+  struct status_check {
+    fmi2_me_instance* self;
+    void operator()(const char* function, fmi2Status s) const { self->check(function, s); }
+  };
+  status_check checker() {
+    return {this};
+  }
   static void logger(fmi2ComponentEnvironment env, fmi2String /*instance*/, fmi2Status status,
                      fmi2String category, fmi2String message, ...) {
     auto* self = static_cast<fmi2_me_instance*>(env);
@@ -180,91 +189,24 @@ class fmi2_me_instance final : public detail::me_instance {
   me_functions fn_;
   fmi2Component instance_ = nullptr;
   bool fatal_ = false;
-  std::vector<fmi2Boolean> booleans_;
-  std::vector<fmi2String> strings_;
+  detail::fmi2_scratch scratch_;
 };
 
 void fmi2_me_instance::set_values(const variable_refs& refs, const value_block& values) {
-  if (!refs.reals.empty()) {
-    check("fmi2SetReal",
-          fn_.fmi2SetReal(instance_, refs.reals.data(), refs.reals.size(), values.reals.data()));
-  }
-  if (!refs.integers.empty()) {
-    check("fmi2SetInteger", fn_.fmi2SetInteger(instance_, refs.integers.data(),
-                                               refs.integers.size(), values.integers.data()));
-  }
-  if (!refs.booleans.empty()) {
-    booleans_.resize(refs.booleans.size());
-    for (std::size_t i = 0; i < booleans_.size(); ++i) {
-      booleans_[i] = values.booleans[i] ? fmi2True : fmi2False;
-    }
-    check("fmi2SetBoolean", fn_.fmi2SetBoolean(instance_, refs.booleans.data(),
-                                               refs.booleans.size(), booleans_.data()));
-  }
-  if (!refs.strings.empty()) {
-    strings_.resize(refs.strings.size());
-    for (std::size_t i = 0; i < strings_.size(); ++i) strings_[i] = values.strings[i].c_str();
-    check("fmi2SetString",
-          fn_.fmi2SetString(instance_, refs.strings.data(), refs.strings.size(), strings_.data()));
-  }
+  detail::fmi2_set_values(fn_, instance_, refs, values, scratch_, checker());
 }
 
 void fmi2_me_instance::get_values(const variable_refs& refs, value_block& values) {
-  values.resize_for(refs);
-  if (!refs.reals.empty()) {
-    check("fmi2GetReal",
-          fn_.fmi2GetReal(instance_, refs.reals.data(), refs.reals.size(), values.reals.data()));
-    detail::require_finite_reals(refs, values, "fmi2GetReal");
-  }
-  if (!refs.integers.empty()) {
-    check("fmi2GetInteger", fn_.fmi2GetInteger(instance_, refs.integers.data(),
-                                               refs.integers.size(), values.integers.data()));
-  }
-  if (!refs.booleans.empty()) {
-    booleans_.resize(refs.booleans.size());
-    check("fmi2GetBoolean", fn_.fmi2GetBoolean(instance_, refs.booleans.data(),
-                                               refs.booleans.size(), booleans_.data()));
-    for (std::size_t i = 0; i < booleans_.size(); ++i) {
-      values.booleans[i] = booleans_[i] != fmi2False;
-    }
-  }
-  if (!refs.strings.empty()) {
-    strings_.resize(refs.strings.size());
-    check("fmi2GetString",
-          fn_.fmi2GetString(instance_, refs.strings.data(), refs.strings.size(), strings_.data()));
-    for (std::size_t i = 0; i < strings_.size(); ++i) {
-      values.strings[i] = strings_[i] ? strings_[i] : "";
-    }
-  }
+  detail::fmi2_get_values(fn_, instance_, refs, values, scratch_, checker());
+  detail::require_finite_reals(refs, values, "fmi2GetReal");
 }
 
 std::vector<std::byte> fmi2_me_instance::save() {
-  fmi2FMUstate state = nullptr;
-  check("fmi2GetFMUstate", fn_.fmi2GetFMUstate(instance_, &state));
-  std::vector<std::byte> bytes;
-  try {
-    size_t size = 0;
-    check("fmi2SerializedFMUstateSize", fn_.fmi2SerializedFMUstateSize(instance_, state, &size));
-    bytes.resize(size);
-    check("fmi2SerializeFMUstate",
-          fn_.fmi2SerializeFMUstate(instance_, state, reinterpret_cast<fmi2Byte*>(bytes.data()),
-                                    size));
-  } catch (...) {
-    fn_.fmi2FreeFMUstate(instance_, &state);
-    throw;
-  }
-  check("fmi2FreeFMUstate", fn_.fmi2FreeFMUstate(instance_, &state));
-  return bytes;
+  return detail::fmi2_save_state(fn_, instance_, checker());
 }
 
 void fmi2_me_instance::restore(std::span<const std::byte> bytes) {
-  fmi2FMUstate state = nullptr;
-  check("fmi2DeSerializeFMUstate",
-        fn_.fmi2DeSerializeFMUstate(instance_, reinterpret_cast<const fmi2Byte*>(bytes.data()),
-                                    bytes.size(), &state));
-  const fmi2Status set = fn_.fmi2SetFMUstate(instance_, state);
-  fn_.fmi2FreeFMUstate(instance_, &state);
-  check("fmi2SetFMUstate", set);
+  detail::fmi2_restore_state(fn_, instance_, bytes, checker());
 }
 
 }  // namespace

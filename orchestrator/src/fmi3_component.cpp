@@ -114,33 +114,12 @@ class fmi3_component final : public component {
 
   std::vector<std::byte> save_state() override {
     require_state_support();
-    fmi3FMUState state = nullptr;
-    check("fmi3GetFMUState", fn_.fmi3GetFMUState(instance_, &state));
-    std::vector<std::byte> bytes;
-    try {
-      size_t size = 0;
-      check("fmi3SerializedFMUStateSize", fn_.fmi3SerializedFMUStateSize(instance_, state, &size));
-      bytes.resize(size);
-      check("fmi3SerializeFMUState",
-            fn_.fmi3SerializeFMUState(instance_, state, reinterpret_cast<fmi3Byte*>(bytes.data()),
-                                      size));
-    } catch (...) {
-      fn_.fmi3FreeFMUState(instance_, &state);
-      throw;
-    }
-    check("fmi3FreeFMUState", fn_.fmi3FreeFMUState(instance_, &state));
-    return bytes;
+    return fmi3::save_state(fn_, instance_, &fmi3_component::check_status, this);
   }
 
   void restore_state(std::span<const std::byte> bytes) override {
     require_state_support();
-    fmi3FMUState state = nullptr;
-    check("fmi3DeserializeFMUState",
-          fn_.fmi3DeserializeFMUState(instance_, reinterpret_cast<const fmi3Byte*>(bytes.data()),
-                                      bytes.size(), &state));
-    const fmi3Status set = fn_.fmi3SetFMUState(instance_, state);
-    fn_.fmi3FreeFMUState(instance_, &state);
-    check("fmi3SetFMUState", set);
+    fmi3::restore_state(fn_, instance_, bytes, &fmi3_component::check_status, this);
     // the copies of settable arrays must follow the restored state
     if (stepping_) values_.refresh(instance_);
   }

@@ -91,6 +91,38 @@ std::shared_ptr<binary> load(const fs::path& file, const fs::path& dir, const st
   return b;
 }
 
+std::vector<std::byte> save_state(const functions& fn, fmi3Instance instance, call_checker check,
+                                  void* context) {
+  fmi3FMUState state = nullptr;
+  check(context, "fmi3GetFMUState", fn.fmi3GetFMUState(instance, &state));
+  std::vector<std::byte> bytes;
+  try {
+    size_t size = 0;
+    check(context, "fmi3SerializedFMUStateSize",
+          fn.fmi3SerializedFMUStateSize(instance, state, &size));
+    bytes.resize(size);
+    check(
+        context, "fmi3SerializeFMUState",
+        fn.fmi3SerializeFMUState(instance, state, reinterpret_cast<fmi3Byte*>(bytes.data()), size));
+  } catch (...) {
+    fn.fmi3FreeFMUState(instance, &state);
+    throw;
+  }
+  check(context, "fmi3FreeFMUState", fn.fmi3FreeFMUState(instance, &state));
+  return bytes;
+}
+
+void restore_state(const functions& fn, fmi3Instance instance, std::span<const std::byte> bytes,
+                   call_checker check, void* context) {
+  fmi3FMUState state = nullptr;
+  check(context, "fmi3DeserializeFMUState",
+        fn.fmi3DeserializeFMUState(instance, reinterpret_cast<const fmi3Byte*>(bytes.data()),
+                                   bytes.size(), &state));
+  const fmi3Status set = fn.fmi3SetFMUState(instance, state);
+  fn.fmi3FreeFMUState(instance, &state);
+  check(context, "fmi3SetFMUState", set);
+}
+
 std::string status_name(fmi3Status s) {
   switch (s) {
     case fmi3OK:

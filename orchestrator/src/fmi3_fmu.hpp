@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "fmi3_model_description.hpp"
 #include "me_instance.hpp"
@@ -121,6 +123,15 @@ std::unique_ptr<component> instantiate(std::shared_ptr<const void> owner, const 
 std::unique_ptr<cosim::detail::me_instance> instantiate_model_exchange(
     std::shared_ptr<const void> owner, const binary& bin, const std::string& name,
     const instance_options& options);
+
+/// Throws for a failing status, naming the function (each component's own check).
+using call_checker = void (*)(void* context, const char* function, fmi3Status status);
+
+/// The instance's FMU state, serialized (the FMU state itself is freed on every path).
+std::vector<std::byte> save_state(const functions& fn, fmi3Instance instance, call_checker check,
+                                  void* context);
+void restore_state(const functions& fn, fmi3Instance instance, std::span<const std::byte> bytes,
+                   call_checker check, void* context);
 
 /// "fmi3OK", "fmi3Error", ...
 std::string status_name(fmi3Status s);

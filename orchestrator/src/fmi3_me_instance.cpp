@@ -170,32 +170,11 @@ class fmi3_me_instance final : public cosim::detail::me_instance {
 };
 
 std::vector<std::byte> fmi3_me_instance::save() {
-  fmi3FMUState state = nullptr;
-  check("fmi3GetFMUState", fn_.fmi3GetFMUState(instance_, &state));
-  std::vector<std::byte> bytes;
-  try {
-    size_t size = 0;
-    check("fmi3SerializedFMUStateSize", fn_.fmi3SerializedFMUStateSize(instance_, state, &size));
-    bytes.resize(size);
-    check("fmi3SerializeFMUState",
-          fn_.fmi3SerializeFMUState(instance_, state, reinterpret_cast<fmi3Byte*>(bytes.data()),
-                                    size));
-  } catch (...) {
-    fn_.fmi3FreeFMUState(instance_, &state);
-    throw;
-  }
-  check("fmi3FreeFMUState", fn_.fmi3FreeFMUState(instance_, &state));
-  return bytes;
+  return save_state(fn_, instance_, &fmi3_me_instance::check_status, this);
 }
 
 void fmi3_me_instance::restore(std::span<const std::byte> bytes) {
-  fmi3FMUState state = nullptr;
-  check("fmi3DeserializeFMUState",
-        fn_.fmi3DeserializeFMUState(instance_, reinterpret_cast<const fmi3Byte*>(bytes.data()),
-                                    bytes.size(), &state));
-  const fmi3Status set = fn_.fmi3SetFMUState(instance_, state);
-  fn_.fmi3FreeFMUState(instance_, &state);
-  check("fmi3SetFMUState", set);
+  restore_state(fn_, instance_, bytes, &fmi3_me_instance::check_status, this);
   // the copies of settable arrays must follow the restored state
   if (initialised_) values_.refresh(instance_);
 }

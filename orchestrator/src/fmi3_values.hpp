@@ -28,7 +28,7 @@ class value_io {
   };
 
   /// `check` throws for a failing status, naming the function.
-  using checker = void (*)(void* context, const char* function, fmi3Status status);
+  using checker = call_checker;
 
   value_io(const binary& bin, std::string component_name, checker check, void* context);
 
