@@ -112,12 +112,36 @@ bool has_workers(const system_structure& system) {
   return false;
 }
 
+// where step and algorithm came from, and what of a foreign file was not read (docs/ssp.md)
+void print_import_notes(const system_structure& system) {
+  const import_notes& notes = system.notes;
+  const std::string step = system.base_step ? format_seconds(*system.base_step) + " s"
+                                            : "the smallest DefaultExperiment stepSize of its FMUs";
+  std::printf("Base step %s, %s, from %s (--step and --algorithm replace them)\n\n", step.c_str(),
+              std::string(to_string(system.algorithm)).c_str(),
+              notes.stepping_from.empty() ? "the system file" : notes.stepping_from.c_str());
+  if (notes.descriptions.size() > 1) {
+    std::printf("System structure descriptions (pick one with --ssd NAME):\n");
+    for (const auto& d : notes.descriptions) {
+      const bool read = system.where.file.ends_with("/" + d);
+      std::printf("  %s%s\n", d.c_str(), read ? "  (read)" : "");
+    }
+    std::printf("\n");
+  }
+  if (!notes.ignored_annotations.empty()) {
+    std::printf("Annotations of other tools, not read:\n");
+    for (const auto& a : notes.ignored_annotations) std::printf("  %s\n", a.c_str());
+    std::printf("\n");
+  }
+}
+
 int inspect_system(const fs::path& file) {
   const system_structure system = load_system_file(file);
   const system_structure expanded = expand_replicas(system);
   std::printf("System '%s' (%s): %zu components, %zu connections, %s\n\n", system.name.c_str(),
               file.string().c_str(), expanded.components.size(), expanded.connections.size(),
               std::string(to_string(system.algorithm)).c_str());
+  print_import_notes(system);
   if (system.agents.count > 0) {
     std::printf("Agents: %d copies of the system at once, %s (docs/swarm.md)\n\n",
                 system.agents.count,

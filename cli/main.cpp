@@ -26,6 +26,19 @@
 #include "view.hpp"
 #include "workers.hpp"
 
+namespace {
+
+constexpr const char* k_ssd_help =
+    "System structure description (.ssd) to read inside an SSP archive or folder instead of "
+    "SystemStructure.ssd (`stride inspect` lists them)";
+
+// SYSTEM/NAME.ssd: the description NAME.ssd inside the SSP SYSTEM (docs/ssp.md)
+std::string inside(const std::string& system, const std::string& ssd) {
+  return ssd.empty() ? system : (std::filesystem::path(system) / ssd).string();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // DDS's threads end before exit's clean-up handlers run (OpenSSL's among them)
   struct close_dds_on_return {
@@ -47,6 +60,8 @@ int main(int argc, char** argv) {
                   "OspSystemStructure.xml (docs/ssp.md); a relative name not found here is looked "
                   "up in the installed models, share/stride/models")
       ->transform(stride::cli::existing_or_installed_model());
+  std::string run_ssd;
+  run->add_option("--ssd", run_ssd, k_ssd_help);
   run->add_option("--stop-time", stop_time, "Stop time in seconds (replaces the XML's)");
   std::string step, algorithm;
   run->add_option("--step", step, "Base step in seconds (replaces the system's)");
@@ -117,6 +132,8 @@ int main(int argc, char** argv) {
   inspect->add_option("file", inspect_file, "FMU file or system (XML, SSP, OSP)")
       ->required()
       ->check(CLI::ExistingPath);
+  std::string inspect_ssd;
+  inspect->add_option("--ssd", inspect_ssd, k_ssd_help);
 
   stride::cli::test_arguments test_args;
   std::string suite_file;
@@ -146,6 +163,8 @@ int main(int argc, char** argv) {
   validate->add_option("file", validate_file, "FMU or system (XML, SSP, OSP)")
       ->required()
       ->transform(stride::cli::existing_or_installed_model());
+  std::string validate_ssd;
+  validate->add_option("--ssd", validate_ssd, k_ssd_help);
   validate->add_option("--stop-time", validate_stop, "Stop time in seconds for a system");
   std::string validate_step, validate_algorithm;
   validate->add_option("--step", validate_step, "Base step in seconds for a system");
@@ -187,7 +206,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) {
-      if (!system_file.empty()) run_args.system = system_file;
+      if (!system_file.empty()) run_args.system = inside(system_file, run_ssd);
       if (!stop_time.empty()) run_args.stop_time = stop_time;
       if (!step.empty()) run_args.step = step;
       if (!algorithm.empty()) run_args.algorithm = algorithm;
@@ -216,7 +235,7 @@ int main(int argc, char** argv) {
       };
       return stride::cli::run(run_args, study);
     }
-    if (*inspect) return stride::cli::inspect(inspect_file);
+    if (*inspect) return stride::cli::inspect(inside(inspect_file, inspect_ssd));
     if (*test) {
       test_args.suite = suite_file;
       stride::suite::assertion_registry kinds = stride::suite::builtin_assertions();
@@ -235,7 +254,7 @@ int main(int argc, char** argv) {
     if (*robot_fmu) return stride::cli::robot_fmu(robot_fmu_args);
     if (*export_command) return stride::cli::export_system(export_args);
     if (*validate) {
-      validate_args.file = validate_file;
+      validate_args.file = inside(validate_file, validate_ssd);
       if (!validate_stop.empty()) validate_args.stop_time = validate_stop;
       if (!validate_step.empty()) validate_args.step = validate_step;
       if (!validate_algorithm.empty()) validate_args.algorithm = validate_algorithm;

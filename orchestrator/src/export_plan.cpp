@@ -290,4 +290,10 @@ void check_export_target(const fs::path& target, bool folder, bool overwrite) {
   }
 }
 
+std::optional<duration> export_plan::base_step() const {
+  std::vector<const model_description*> models;
+  for (const auto& c : components_) models.push_back(c.description);
+  return base_step_of(system_, models);
+}
+
 }  // namespace stride::cosim::detail

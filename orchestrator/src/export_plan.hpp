@@ -72,6 +72,9 @@ class export_plan {
   /// sorted by target component and variable: the order the SSP importer gives them
   const std::vector<export_connection>& connections() const noexcept { return connections_; }
   std::string_view format() const noexcept { return format_; }
+  /// The base step as a run takes it (base_step_of); nullopt when neither the system nor an FMU
+  /// gives one.
+  std::optional<duration> base_step() const;
 
  private:
   bool ssp() const noexcept { return format_ == "SSP"; }

@@ -33,6 +33,11 @@ inline constexpr std::string_view k_ssb_ns =
     "http://ssp-standard.org/SSP1/SystemStructureSignalDictionary";
 inline constexpr std::string_view k_osp_ns =
     "http://opensimulationplatform.com/MSMI/OSPSystemStructure";
+/// the content of libcosim's and OMSimulator's SSP annotations (docs/ssp.md)
+inline constexpr std::string_view k_osp_annotations_ns =
+    "http://opensimulationplatform.com/SSP/OSPAnnotations";
+inline constexpr std::string_view k_oms_ns =
+    "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd";
 /// Stride's own annotation content (docs/ssp.md)
 inline constexpr std::string_view k_stride_ns = "https://stride-sim.org/ssp/1";
 

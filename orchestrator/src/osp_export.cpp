@@ -47,11 +47,9 @@ void check_osp(const detail::export_plan& plan) {
   }
 }
 
-// the system's base step as the build takes it (base_step_of)
+// the system's base step as the build takes it
 duration base_step(const detail::export_plan& plan) {
-  std::vector<const model_description*> models;
-  for (const auto& c : plan.components()) models.push_back(c.description);
-  const std::optional<duration> step = base_step_of(plan.system(), models);
+  const std::optional<duration> step = plan.base_step();
   if (!step) {
     detail::refuse_export(k_format, plan.system().where,
                           "no base step (give <simulation step>; no FMU declares a "

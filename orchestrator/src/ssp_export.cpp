@@ -59,10 +59,12 @@ const char* value_type(variable_type t) {
   }
 }
 
-// <ssd:Annotations><ssc:Annotation type=TYPE><stride:LOCAL/></ssc:Annotation></ssd:Annotations>
+// <ssd:Annotations><ssc:Annotation type=TYPE><LOCAL/></ssc:Annotation></ssd:Annotations>, the
+// parent's one ssd:Annotations made on first use
 XMLElement* add_annotation(XMLElement* parent, const char* type, const char* local) {
-  XMLElement* a =
-      parent->InsertNewChildElement("ssd:Annotations")->InsertNewChildElement("ssc:Annotation");
+  XMLElement* annotations = parent->FirstChildElement("ssd:Annotations");
+  if (annotations == nullptr) annotations = parent->InsertNewChildElement("ssd:Annotations");
+  XMLElement* a = annotations->InsertNewChildElement("ssc:Annotation");
   a->SetAttribute("type", type);
   return a->InsertNewChildElement(local);
 }
@@ -79,6 +81,8 @@ class ssd_writer {
     root->SetAttribute("xmlns:ssd", "http://ssp-standard.org/SSP1/SystemStructureDescription");
     root->SetAttribute("xmlns:ssc", "http://ssp-standard.org/SSP1/SystemStructureCommon");
     root->SetAttribute("xmlns:stride", "https://stride-sim.org/ssp/1");
+    root->SetAttribute("xmlns:osp", std::string(detail::k_osp_annotations_ns).c_str());
+    root->SetAttribute("xmlns:oms", std::string(detail::k_oms_ns).c_str());
     root->SetAttribute("version", "1.0");
     root->SetAttribute("name", (s.description.empty() ? s.name : s.description).c_str());
     root->SetAttribute("generationTool", "Stride");
@@ -93,7 +97,16 @@ class ssd_writer {
     if (!plan_.connections().empty()) {
       write_connections(system->InsertNewChildElement("ssd:Connections"));
     }
-    write_experiment(root->InsertNewChildElement("ssd:DefaultExperiment"));
+    const std::optional<duration> step = plan_.base_step();
+    if (step) {
+      // OMSimulator's fixed-step master at Stride's step
+      XMLElement* master = add_annotation(system, "org.openmodelica", "oms:Annotations")
+                               ->InsertNewChildElement("oms:SimulationInformation")
+                               ->InsertNewChildElement("oms:FixedStepMaster");
+      master->SetAttribute("description", "oms-ma");
+      master->SetAttribute("stepSize", format_seconds(*step).c_str());
+    }
+    write_experiment(root->InsertNewChildElement("ssd:DefaultExperiment"), step);
     return detail::xml_text(doc_);
   }
 
@@ -156,8 +169,9 @@ class ssd_writer {
     }
   }
 
-  // times exactly as Stride holds them; step and algorithm in Stride's system annotation
-  void write_experiment(XMLElement* e) const {
+  // times exactly as Stride holds them; step and algorithm in Stride's system annotation, the
+  // step also as libcosim reads it (docs/ssp.md)
+  void write_experiment(XMLElement* e, std::optional<duration> step) const {
     const system_structure& s = plan_.system();
     e->SetAttribute("startTime", format_seconds(s.start).c_str());
     if (s.stop) e->SetAttribute("stopTime", format_seconds(*s.stop).c_str());
@@ -166,6 +180,11 @@ class ssd_writer {
     simulation->SetAttribute("algorithm", std::string(to_string(s.algorithm)).c_str());
     write_record(simulation, s.record);
     write_agents(simulation, s.agents);
+    if (step) {
+      add_annotation(e, "com.opensimulationplatform", "osp:Algorithm")
+          ->InsertNewChildElement("osp:FixedStepAlgorithm")
+          ->SetAttribute("baseStepSize", format_seconds(*step).c_str());
+    }
   }
 
   // recording as <record> of the system XML says it, written when it is not the default (every

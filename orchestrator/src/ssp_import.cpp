@@ -1,6 +1,7 @@
 // The reader of SSP 1.0 system structure descriptions (.ssd): the system tree with its
 // components, connectors, connections, parameter bindings, units, default experiment and
 // Stride's annotation, checked element by element against the SSP's schema (docs/ssp.md).
+#include <algorithm>
 #include <functional>
 #include <set>
 
@@ -21,6 +22,13 @@ constexpr std::string_view k_component_annotation = "org.stride-sim.component";
 
 // where an Annotations element stands: which of Stride's annotations it may hold
 enum class annotated { other, system, connection, component };
+
+// where another tool's step and algorithm may stand: libcosim's in the ssd:DefaultExperiment,
+// OMSimulator's on the top ssd:System
+enum class tool_place { none, experiment, top_system };
+
+constexpr std::string_view k_osp_annotation = "com.opensimulationplatform";
+constexpr std::string_view k_oms_annotation = "org.openmodelica";
 
 // which of Stride's annotations a type names (other: another tool's)
 annotated annotation_kind(std::string_view type) {
@@ -113,7 +121,8 @@ class ssd_reader {
                        file_.fail(c, "signal dictionaries are not supported (SSP 1.0 part 'ssb')");
                      }
                      if (local == "Annotations") {
-                       read_annotations(c, top ? annotated::system : annotated::other);
+                       read_annotations(c, top ? annotated::system : annotated::other, {},
+                                        top ? tool_place::top_system : tool_place::none);
                      }
                    });
     return s;
@@ -227,13 +236,15 @@ class ssd_reader {
       file_.allow_attributes(x, {"id", "description", "name", "kind"});
       connector c;
       c.name = file_.required(x, "name");
-      c.kind = file_.required(x, "kind");
+      // files in the wild leave kind out: a component's connector then takes its FMU's
+      // causality (check_against_fmu); a system's needs none
+      c.kind = file_.attribute(x, "kind").value_or("");
       c.where = file_.at(x);
       if (owner.find_connector(c.name) != nullptr) file_.fail(x, "a second connector so named");
       if (c.kind == "inout") {
         file_.fail(x, "kind=\"inout\" (signal dictionary references) is not supported");
       }
-      if (c.kind != "input" && c.kind != "output" && c.kind != "parameter" &&
+      if (!c.kind.empty() && c.kind != "input" && c.kind != "output" && c.kind != "parameter" &&
           c.kind != "calculatedParameter") {
         file_.fail(x, "kind=\"" + c.kind +
                           "\" is not input, output, parameter or "
@@ -278,9 +289,10 @@ class ssd_reader {
   }
 
   // a component's connector is its FMU's variable of the same name, causality and type
-  void check_against_fmu(const XMLElement& x, const connector& c, const element& owner) const {
+  void check_against_fmu(const XMLElement& x, connector& c, const element& owner) const {
     const variable_description* v = owner.description->find(c.name);
     if (v == nullptr) file_.fail(x, "the FMU of '" + owner.path + "' has no variable so named");
+    if (c.kind.empty()) c.kind = to_string(v->causality);
     if (c.kind != to_string(v->causality)) {
       file_.fail(x, "kind=\"" + c.kind + "\", but the FMU's variable is " +
                         std::string(to_string(v->causality)));
@@ -320,18 +332,32 @@ class ssd_reader {
     });
   }
 
-  void check_end(const XMLElement& x, const element& system, const std::string& element_name,
+  // A component's connector that its ssd:Connectors do not list is its FMU's variable of that
+  // name, as tools that leave the list empty (or short) mean it.
+  void check_end(const XMLElement& x, element& system, const std::string& element_name,
                  const std::string& connector_name) const {
-    const element* owner = element_name.empty() ? &system : system.find_child(element_name);
+    element* owner = &system;
+    if (!element_name.empty()) {
+      const auto it = std::find_if(system.children.begin(), system.children.end(),
+                                   [&](const element& c) { return c.name == element_name; });
+      owner = it == system.children.end() ? nullptr : &*it;
+    }
     if (owner == nullptr) {
       file_.fail(
           x, "connection to a missing element: the system has no element \"" + element_name + "\"");
     }
-    if (owner->find_connector(connector_name) == nullptr) {
-      file_.fail(x, "connection to a missing connector: " +
-                        (element_name.empty() ? "the system" : "element \"" + element_name + "\"") +
-                        " has no connector \"" + connector_name + "\"");
+    if (owner->find_connector(connector_name) != nullptr) return;
+    if (!owner->system) {
+      if (const variable_description* v = owner->description->find(connector_name)) {
+        owner->connectors.push_back(
+            {connector_name, std::string(to_string(v->causality)), v->type, "", file_.at(x)});
+        return;
+      }
     }
+    file_.fail(x, "connection to a missing connector: " +
+                      (element_name.empty() ? "the system" : "element \"" + element_name + "\"") +
+                      " has no connector \"" + connector_name + "\"" +
+                      (owner->system ? "" : " and its FMU no variable so named"));
   }
 
   void read_default_experiment(const XMLElement& e) {
@@ -342,33 +368,55 @@ class ssd_reader {
     if (const auto t = file_.attribute(e, "stopTime")) {
       content_.stop = time_point(file_.seconds(e, *t, "stopTime"));
     }
-    file_.children(e, {{k_ssd_ns, "Annotations", 0}},
-                   [&](const XMLElement& a, auto) { read_annotations(a, annotated::system); });
+    file_.children(e, {{k_ssd_ns, "Annotations", 0}}, [&](const XMLElement& a, auto) {
+      read_annotations(a, annotated::system, {}, tool_place::experiment);
+    });
   }
 
-  // Annotations of other tools are theirs; Stride's own are read where they belong: the
-  // system's here, a connection's or component's content (the one element of Stride's
-  // namespace) by `read`.
+  // Stride's own annotations are read where they belong: the system's here, a connection's or
+  // component's content (the one element of Stride's namespace) by `read`. Of other tools'
+  // annotations the step and algorithm of libcosim and OMSimulator are read at `place`; the
+  // rest are listed as ignored. (ssd:Annotation is OMSimulator's older spelling.)
   void read_annotations(const XMLElement& e, annotated where,
-                        const std::function<void(const XMLElement&)>& read = {}) {
+                        const std::function<void(const XMLElement&)>& read = {},
+                        tool_place place = tool_place::none) {
     file_.allow_attributes(e, {});
-    file_.children(e, {{k_ssc_ns, "Annotation", 0, true}}, [&](const XMLElement& a, auto) {
-      file_.allow_attributes(a, {"type"});
-      const annotated kind = annotation_kind(file_.required(a, "type"));
-      if (kind == annotated::other) return;
-      if (where != kind) file_.fail(a, misplaced(kind));
-      const XMLElement& content = stride_element(a, stride_local(kind));
-      if (kind != annotated::system) {
-        read(content);
-        return;
-      }
-      if (stride_annotation_) {
-        file_.fail(a,
-                   "a second Stride annotation (the first at " + stride_annotation_->str() + ")");
-      }
-      stride_annotation_ = file_.at(a);
-      read_simulation(content);
-    });
+    file_.children(e, {{k_ssc_ns, "Annotation", 0, true}, {k_ssd_ns, "Annotation", 0, true}},
+                   [&](const XMLElement& a, auto) {
+                     file_.allow_attributes(a, {"type"});
+                     const std::string type = file_.required(a, "type");
+                     const annotated kind = annotation_kind(type);
+                     if (kind == annotated::other) {
+                       read_tool_annotation(a, type, place);
+                       return;
+                     }
+                     if (where != kind) file_.fail(a, misplaced(kind));
+                     const XMLElement& content = stride_element(a, stride_local(kind));
+                     if (kind != annotated::system) {
+                       read(content);
+                       return;
+                     }
+                     if (content_.stride_annotation) {
+                       file_.fail(a, "a second Stride annotation (the first at " +
+                                         content_.stride_annotation->str() + ")");
+                     }
+                     content_.stride_annotation = file_.at(a);
+                     read_simulation(content);
+                   });
+  }
+
+  void read_tool_annotation(const XMLElement& a, const std::string& type, tool_place place) {
+    std::optional<tool_stepping> found;
+    if (place == tool_place::experiment && type == k_osp_annotation) {
+      found = read_osp_stepping(file_, a);
+    } else if (place == tool_place::top_system && type == k_oms_annotation) {
+      found = read_oms_stepping(file_, a);
+    }
+    if (found) {
+      content_.tool_steppings.push_back(std::move(*found));
+    } else {
+      content_.ignored_annotations.push_back(type + " at " + file_.at(a).str());
+    }
   }
 
   // the one element of Stride's namespace inside a Stride annotation
@@ -418,8 +466,33 @@ class ssd_reader {
   fmu_facts& facts_;  // outlives the content: its elements point at the descriptions
   std::vector<std::unique_ptr<unit_table>>& keep_;
   ssd_content content_;
-  std::optional<source_location> stride_annotation_;
 };
+
+// Stride's annotation alone decides step and algorithm when it is there (an archive Stride
+// exported carries the other tools' too); else the other tools' annotations, which must agree.
+void take_stepping(const ssd_content& content, system_structure& s) {
+  s.base_step = content.step;
+  s.algorithm = content.algorithm.value_or(algorithm_kind::gauss_seidel);
+  if (content.stride_annotation) {
+    s.notes.stepping_from =
+        "Stride's annotation (org.stride-sim.system) at " + content.stride_annotation->str();
+    return;
+  }
+  if (content.tool_steppings.empty()) return;
+  const tool_stepping& first = content.tool_steppings.front();
+  s.notes.stepping_from = first.source;
+  for (const auto& other : content.tool_steppings) {
+    if (other.step != first.step) {
+      throw validation_error(other.where.str() + ": the step " + format_seconds(other.step) +
+                             " s of " + other.source + " differs from the step " +
+                             format_seconds(first.step) + " s of " + first.source +
+                             "; give one step (or Stride's system annotation, or --step)");
+    }
+    if (&other != &first) s.notes.stepping_from += " and " + other.source;
+  }
+  s.base_step = first.step;
+  s.algorithm = first.algorithm;
+}
 
 }  // namespace
 }  // namespace ssp
@@ -437,8 +510,8 @@ system_structure import_ssd(const fs::path& ssd, const std::string& shown, const
   s.base_dir = ssd.parent_path();
   s.start = content.start.value_or(time_point{});
   s.stop = content.stop;
-  s.base_step = content.step;
-  s.algorithm = content.algorithm.value_or(algorithm_kind::gauss_seidel);
+  ssp::take_stepping(content, s);
+  s.notes.ignored_annotations = content.ignored_annotations;
   if (content.record) s.record = *content.record;
   s.agents = content.agents;
   ssp::flatten(content, s, sink_or_stderr(log));

@@ -115,6 +115,25 @@ struct element {
   const element* find_child(std::string_view child_name) const;
 };
 
+/// Step and algorithm as another tool's annotation gives them (docs/ssp.md, "Other tools'
+/// annotations").
+struct tool_stepping {
+  duration step{};
+  algorithm_kind algorithm = algorithm_kind::jacobi;
+  std::string source;  ///< "libcosim's annotation (com.opensimulationplatform) at FILE:LINE"
+  source_location where;
+};
+
+/// libcosim's annotation (type com.opensimulationplatform) of the ssd:DefaultExperiment:
+/// osp:Algorithm/osp:FixedStepAlgorithm baseStepSize. nullopt when it names no algorithm.
+std::optional<tool_stepping> read_osp_stepping(const xml_file& file,
+                                               const tinyxml2::XMLElement& annotation);
+/// OMSimulator's annotation (type org.openmodelica) of the top ssd:System:
+/// [oms:Annotations/]oms:SimulationInformation/oms:FixedStepMaster stepSize. nullopt when it
+/// names no master. \throws validation_error for a solver of Model Exchange systems.
+std::optional<tool_stepping> read_oms_stepping(const xml_file& file,
+                                               const tinyxml2::XMLElement& annotation);
+
 /// Everything read from one SSD (and the files it refers to).
 struct ssd_content {
   element top;
@@ -126,6 +145,9 @@ struct ssd_content {
   std::optional<record_spec> record;  ///< Stride's system annotation; nullopt: the default
   agents_spec agents;                 ///< Stride's system annotation; count 0: one run
   std::string description;
+  std::optional<source_location> stride_annotation;  ///< where Stride's system annotation is
+  std::vector<tool_stepping> tool_steppings;         ///< other tools' step and algorithm
+  std::vector<std::string> ignored_annotations;      ///< "TYPE at FILE:LINE", in document order
 };
 
 /// Stride's <Record> (in its system annotation): <record> of the system XML, read exactly.

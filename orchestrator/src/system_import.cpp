@@ -2,6 +2,8 @@
 // folder or SSD, or an OSP system structure (docs/ssp.md).
 #include "stride/cosim/system_import.hpp"
 
+#include <algorithm>
+
 #include "import_xml.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/archive.hpp"
@@ -26,21 +28,63 @@ std::string root_name(const fs::path& file) {
   return std::string(detail::xml_file::local(*doc.RootElement()));
 }
 
-system_structure load_archive(const fs::path& archive, const log_sink& log) {
+// the .ssd files at the root of an SSP archive's or folder's tree, sorted
+std::vector<std::string> descriptions_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(dir, error)) {
+    if (entry.is_regular_file(error) && text::lower(entry.path().extension().string()) == ".ssd") {
+      names.push_back(entry.path().filename().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
+// The system structure description `ssd` (a file name at the root) of the SSP tree in `dir`,
+// shown as `shown`/`ssd`.
+system_structure load_ssd_in(const fs::path& dir, const fs::path& shown, const std::string& ssd,
+                             const fs::path& root, const log_sink& log) {
+  const std::vector<std::string> descriptions = descriptions_in(dir);
+  if (!fs::is_regular_file(dir / ssd)) {
+    std::string message = shown.string() + ": no " + ssd + " at its root";
+    if (ssd == k_ssd_file) message += " (an SSP's default system)";
+    if (!descriptions.empty()) {
+      message += "; the .ssd files there: " + listed(descriptions) + " (pick one as " +
+                 shown.string() + "/NAME.ssd or with --ssd NAME)";
+    }
+    throw validation_error(message);
+  }
+  system_structure s = detail::import_ssd(dir / ssd, (shown / ssd).string(), root, log);
+  s.notes.descriptions = descriptions;
+  return s;
+}
+
+system_structure load_archive(const fs::path& archive, const std::string& ssd,
+                              const log_sink& log) {
   auto dir = std::make_shared<const temp_dir>("stride-ssp-");
   try {
     extract_archive(archive, dir->path());
   } catch (const fmu_import_error& e) {
     throw validation_error(e.what());
   }
-  const fs::path ssd = dir->path() / k_ssd_file;
-  if (!fs::is_regular_file(ssd)) {
-    throw validation_error(archive.string() + ": no " + k_ssd_file +
-                           " at the root of the archive (an SSP's default system)");
-  }
-  system_structure s = detail::import_ssd(ssd, (archive / k_ssd_file).string(), dir->path(), log);
+  system_structure s = load_ssd_in(dir->path(), archive, ssd, dir->path(), log);
   s.extracted = std::move(dir);
   return s;
+}
+
+// "x.ssp/Other.ssd": an SSD other than the default inside the archive x.ssp
+bool names_ssd_in_archive(const fs::path& path) {
+  std::error_code error;
+  return text::lower(path.extension().string()) == ".ssd" &&
+         text::lower(path.parent_path().extension().string()) == ".ssp" &&
+         fs::is_regular_file(path.parent_path(), error);
 }
 
 }  // namespace
@@ -53,6 +97,7 @@ system_format detect_system_format(const fs::path& path) {
     throw validation_error(path.string() + ": a folder holding neither " + k_ssd_file +
                            " (SSP) nor " + k_osp_file + " (OSP)");
   }
+  if (names_ssd_in_archive(path)) return system_format::ssp_archive;
   if (!fs::exists(path, error)) {
     throw validation_error(path.string() + ": cannot open the system file");
   }
@@ -68,9 +113,12 @@ system_format detect_system_format(const fs::path& path) {
 system_structure load_system_file(const fs::path& path, const log_sink& log) {
   switch (detect_system_format(path)) {
     case system_format::ssp_archive:
-      return load_archive(path, log);
+      if (names_ssd_in_archive(path)) {
+        return load_archive(path.parent_path(), path.filename().string(), log);
+      }
+      return load_archive(path, k_ssd_file, log);
     case system_format::ssp_folder:
-      return detail::import_ssd(path / k_ssd_file, (path / k_ssd_file).string(), {}, log);
+      return load_ssd_in(path, path, k_ssd_file, {}, log);
     case system_format::ssd:
       return detail::import_ssd(path, path.string(), {}, log);
     case system_format::osp: {

@@ -5,6 +5,7 @@
 // from the archive; every refusal names the file, the line and what cannot be exported.
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <map>
 
 #include "export_fixture.hpp"
@@ -220,6 +221,33 @@ TEST_F(ssp_export, replica_copies_recording_workers_and_agents_read_back_as_writ
   fs::create_directories(scratch.path() / "again");
   export_ssp(back, scratch.path() / "again" / "pair.ssp", options);
   EXPECT_EQ(test::file_text(scratch.path() / "again" / "pair.ssp"), test::file_text(archive));
+}
+
+TEST_F(ssp_export, the_step_is_also_written_as_libcosim_and_omsimulator_read_it) {
+  const fs::path archive = scratch.path() / "pair.ssp";
+  export_ssp(system_xml(), archive, options);
+  std::string ssd = entries(archive).at("SystemStructure.ssd");
+  EXPECT_THAT(ssd, HasSubstr(R"(<osp:FixedStepAlgorithm baseStepSize="0.01"/>)"));
+  EXPECT_THAT(ssd, HasSubstr(R"(<oms:FixedStepMaster description="oms-ma" stepSize="0.01"/>)"));
+  // Stride's own annotation decides when it reads its export back ...
+  EXPECT_THAT(load_system_file(archive).notes.stepping_from, HasSubstr("Stride's annotation"));
+  // ... without it, the two tools' annotations give the step (they agree) and their algorithm
+  const auto begin = ssd.rfind("<ssc:Annotation", ssd.find("org.stride-sim.system"));
+  const auto end = ssd.find("</ssc:Annotation>", begin) + std::string("</ssc:Annotation>").size();
+  ssd.erase(begin, end - begin);
+  fs::create_directories(scratch.path() / "tools");
+  std::ofstream(scratch.path() / "tools" / "SystemStructure.ssd") << ssd;
+  for (const auto& e : test::read_zip(archive)) {
+    if (e.name.starts_with("resources/")) {
+      fs::create_directories(scratch.path() / "tools" / "resources");
+      std::ofstream(scratch.path() / "tools" / e.name, std::ios::binary) << e.content;
+    }
+  }
+  const system_structure back = load_system_file(scratch.path() / "tools");
+  EXPECT_EQ(back.base_step, std::chrono::milliseconds(10));
+  EXPECT_EQ(back.algorithm, algorithm_kind::jacobi);
+  EXPECT_THAT(back.notes.stepping_from, HasSubstr("OMSimulator's annotation (org.openmodelica)"));
+  EXPECT_THAT(back.notes.stepping_from, HasSubstr("and libcosim's annotation"));
 }
 
 TEST_F(ssp_export, default_recording_writes_no_record_annotation) {

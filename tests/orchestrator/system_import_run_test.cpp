@@ -198,7 +198,70 @@ TEST_F(import_run, inspect_validate_test_and_sweep_take_ssp_systems) {
   EXPECT_THAT(r.out + r.err, HasSubstr("2 of 2 points"));
 }
 
+TEST_F(import_run, the_pair_as_libcosim_and_omsimulator_write_it_runs_as_their_jacobi_masters) {
+  const std::string jacobi = results(k_data / "stride_test_pair.xml", "xml", "--algorithm jacobi");
+  ASSERT_NE(jacobi, results(k_data / "stride_test_pair.xml", "gauss-seidel"));
+  // libcosim's shape: FMUs beside the SSD, the step in its annotation
+  const fs::path libcosim = fixture("libcosim", ".", {"stride_test"});
+  EXPECT_EQ(results(libcosim, "libcosim-out"), jacobi);
+  EXPECT_EQ(results(zipped(libcosim, "libcosim.ssp"), "libcosim-ssp"), jacobi);
+  // OMSimulator's shape, with a second SSD in the archive
+  const fs::path oms = fixture("omsimulator", "resources", {"stride_test"});
+  fs::copy_file(k_data / "ssp" / "pair" / "resources" / "vectors.ssv",
+                oms / "resources" / "vectors.ssv");
+  EXPECT_EQ(results(oms, "oms-out"), jacobi);
+  const fs::path archive = zipped(oms, "oms.ssp");
+  EXPECT_EQ(results(archive, "oms-ssp"), jacobi);
+  // the command line still wins
+  EXPECT_EQ(results(archive, "oms-gs", "--algorithm gauss-seidel"),
+            read_file(scratch.path() / "gauss-seidel" / "results.csv"));
+
+  const std::string variable = read_file(oms / "Variable.ssd");
+  const auto line = std::count(variable.begin(),
+                               variable.begin() + variable.find("<oms:VariableStepSolver"), '\n') +
+                    1;
+  refused("run " + quoted(archive) + " --ssd Variable.ssd --quiet",
+          archive.string() + "/Variable.ssd:" + std::to_string(line) + ": <oms:VariableStepSolver",
+          "OMSimulator's VariableStepSolver integrates Model Exchange FMUs");
+  refused("validate " + quoted(archive) + " --ssd Missing.ssd",
+          archive.string() + ": no Missing.ssd at its root",
+          "the .ssd files there: SystemStructure.ssd, Variable.ssd");
+
+  const auto r = stride("inspect " + quoted(archive));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("Base step 0.01 s, jacobi, from OMSimulator's annotation "
+                               "(org.openmodelica) at " +
+                               archive.string() + "/SystemStructure.ssd:"));
+  EXPECT_THAT(r.out, HasSubstr("  SystemStructure.ssd  (read)\n  Variable.ssd\n"));
+  // its DefaultExperiment's annotation holds result-file settings Stride does not read
+  EXPECT_THAT(r.out, HasSubstr("Annotations of other tools, not read:\n  org.openmodelica at " +
+                               archive.string() + "/SystemStructure.ssd:"));
+}
+
 #ifdef STRIDE_HAVE_WALK_FMUS
+TEST_F(import_run, the_jacobi_walk_exported_reads_back_through_libcosims_annotation_alone) {
+  std::string walk = read_file(fs::path(STRIDE_SOURCE_DIR) / "models" / "walk.xml");
+  walk.replace(walk.find("gauss-seidel"), 12, "jacobi");
+  const fs::path xml = write("walk.xml", walk);
+  const std::string reference = results(xml, "xml", "--stop-time 1");
+  ASSERT_EQ(lines(reference).size(), 127u);  // t = 0, 0.008, ..., 1
+  const auto r = stride("export walk.xml --ssp walk.ssp");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path dir = scratch.path() / "walk";
+  extract_archive(scratch.path() / "walk.ssp", dir);
+  // only libcosim's annotation left to give step and algorithm
+  std::string ssd = read_file(dir / "SystemStructure.ssd");
+  for (const char* type : {"org.stride-sim.system", "org.openmodelica"}) {
+    const auto begin = ssd.rfind("<ssc:Annotation", ssd.find(type));
+    const auto end = ssd.find("</ssc:Annotation>", begin) + std::string("</ssc:Annotation>").size();
+    ssd.erase(begin, end - begin);
+  }
+  ASSERT_EQ(ssd.find("org.stride-sim.system"), std::string::npos);
+  ASSERT_NE(ssd.find("osp:FixedStepAlgorithm baseStepSize=\"0.008\""), std::string::npos);
+  write("walk/SystemStructure.ssd", ssd);
+  EXPECT_EQ(results(dir, "ssp", "--stop-time 1"), reference);
+}
+
 TEST_F(import_run, the_walk_as_an_ssd_walks_as_walk_xml) {
   const fs::path walk = fixture("walk", "resources", {"gait", "robot"});
   const std::string reference =

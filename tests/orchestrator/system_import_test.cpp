@@ -104,7 +104,7 @@ TEST_F(system_import, bad_archives_are_refused_cleanly) {
   EXPECT_THAT(error(archive("link.ssp", {{"resources/link.fmu", "/etc/passwd", true}})),
               HasSubstr("is a symbolic link"));
   EXPECT_THAT(error(archive("nossd.ssp", {}, false)),
-              HasSubstr("nossd.ssp: no SystemStructure.ssd at the root of the archive"));
+              HasSubstr("nossd.ssp: no SystemStructure.ssd at its root (an SSP's default system)"));
   // an FMU the SSD names must lie inside the archive
   std::string ssd = read(pair / "SystemStructure.ssd");
   const std::string from = R"(name="b" source="resources/stride_test.fmu")";

@@ -14,7 +14,8 @@ namespace stride::cosim {
 /// The formats load_system_file() tells apart.
 enum class system_format {
   stride_xml,   ///< docs/system-xml.md
-  ssp_archive,  ///< .ssp: a zip archive with SystemStructure.ssd at its root
+  ssp_archive,  ///< .ssp: a zip archive with SystemStructure.ssd at its root; "x.ssp/NAME.ssd"
+                ///< names another system structure description inside it
   ssp_folder,   ///< a folder holding SystemStructure.ssd
   ssd,          ///< a bare .ssd file
   osp,          ///< an XML file whose root element is OspSystemStructure

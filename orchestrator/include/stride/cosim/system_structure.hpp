@@ -118,6 +118,18 @@ struct replica_group {
   source_location where;
 };
 
+/// What an importer of a foreign format found besides the system itself (`stride inspect` shows
+/// it; docs/ssp.md).
+struct import_notes {
+  /// what set the base step and the algorithm, e.g. "libcosim's annotation
+  /// (com.opensimulationplatform) at FILE:LINE"; "" when the system file itself or defaults did
+  std::string stepping_from;
+  /// annotations of other tools that Stride does not read: "TYPE at FILE:LINE"
+  std::vector<std::string> ignored_annotations;
+  /// the system structure descriptions (.ssd) at the root of an SSP archive or folder
+  std::vector<std::string> descriptions;
+};
+
 /// A whole system.
 struct system_structure {
   std::string name = "system";
@@ -137,6 +149,7 @@ struct system_structure {
   /// The folder an archive (.ssp) was extracted into, when the system came from one: its FMU
   /// paths point there, so it lives as long as any copy of the structure.
   std::shared_ptr<const temp_dir> extracted;
+  import_notes notes;
 
   /// Convenience for C++ callers; each returns the added element.
   component_spec& add_component(std::string name, std::string fmu, int step_multiple = 1);

@@ -1,0 +1,92 @@
+// Step size and master algorithm as two other SSP tools write them into their own annotations
+// (docs/ssp.md, "Other tools' annotations"): libcosim (type com.opensimulationplatform, in the
+// ssd:DefaultExperiment) and OMSimulator (type org.openmodelica, on the top ssd:System). Both
+// tools' fixed-step masters step every component from the same communication point with the
+// inputs of the last one, which is Stride's Jacobi algorithm.
+#include "ssp_model.hpp"
+
+namespace stride::cosim::detail::ssp {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+// Whether `e` is the tool's element `local`: by its namespace, or, as the tools themselves read
+// their files without namespaces, by the tool's usual prefix when that is not declared.
+bool is_tool_element(const xml_file& file, const XMLElement& e, std::string_view ns,
+                     std::string_view prefix, std::string_view local) {
+  if (xml_file::local(e) != local) return false;
+  const std::string_view declared = file.ns(e);
+  if (!declared.empty()) return declared == ns;
+  const std::string_view name = e.Name();
+  return name.size() == prefix.size() + 1 + local.size() && name.starts_with(prefix) &&
+         name[prefix.size()] == ':';
+}
+
+const XMLElement* tool_child(const xml_file& file, const XMLElement& parent, std::string_view ns,
+                             std::string_view prefix, std::string_view local) {
+  for (const XMLElement* c = parent.FirstChildElement(); c != nullptr;
+       c = c->NextSiblingElement()) {
+    if (is_tool_element(file, *c, ns, prefix, local)) return c;
+  }
+  return nullptr;
+}
+
+duration positive_step(const xml_file& file, const XMLElement& e, const char* attribute) {
+  const duration step = file.seconds(e, file.required(e, attribute), attribute);
+  if (step <= duration::zero()) file.fail(e, std::string(attribute) + " must be positive");
+  return step;
+}
+
+tool_stepping stepping(const xml_file& file, const XMLElement& annotation, const XMLElement& at,
+                       duration step, std::string_view tool) {
+  return {step, algorithm_kind::jacobi,
+          std::string(tool) + " (" + file.attribute(annotation, "type").value_or("") + ") at " +
+              file.at(at).str(),
+          file.at(at)};
+}
+
+}  // namespace
+
+std::optional<tool_stepping> read_osp_stepping(const xml_file& file, const XMLElement& annotation) {
+  const XMLElement* algorithm =
+      tool_child(file, annotation, k_osp_annotations_ns, "osp", "Algorithm");
+  if (algorithm == nullptr) return std::nullopt;
+  const XMLElement* fixed = algorithm->FirstChildElement();
+  if (fixed == nullptr) file.fail(*algorithm, "names no algorithm");
+  if (!is_tool_element(file, *fixed, k_osp_annotations_ns, "osp", "FixedStepAlgorithm")) {
+    file.fail(*fixed,
+              "libcosim's algorithm '" + std::string(xml_file::local(*fixed)) +
+                  "' is not supported: Stride reads osp:FixedStepAlgorithm (its Jacobi master)");
+  }
+  // libcosim's own files spell it baseStepSize; early ones stepSize. numWorkerThreads sets
+  // libcosim's parallelism, which does not change its results.
+  file.allow_attributes(*fixed, {"baseStepSize", "stepSize", "numWorkerThreads"});
+  const char* attribute = fixed->Attribute("baseStepSize") != nullptr ? "baseStepSize" : "stepSize";
+  return stepping(file, annotation, *fixed, positive_step(file, *fixed, attribute),
+                  "libcosim's annotation");
+}
+
+std::optional<tool_stepping> read_oms_stepping(const xml_file& file, const XMLElement& annotation) {
+  // newer files wrap the content in oms:Annotations, older ones do not
+  const XMLElement* content = tool_child(file, annotation, k_oms_ns, "oms", "Annotations");
+  if (content == nullptr) content = &annotation;
+  const XMLElement* info = tool_child(file, *content, k_oms_ns, "oms", "SimulationInformation");
+  if (info == nullptr) return std::nullopt;
+  for (const XMLElement* c = info->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
+    if (is_tool_element(file, *c, k_oms_ns, "oms", "FixedStepMaster")) {
+      return stepping(file, annotation, *c, positive_step(file, *c, "stepSize"),
+                      "OMSimulator's annotation");
+    }
+    if (is_tool_element(file, *c, k_oms_ns, "oms", "VariableStepSolver") ||
+        is_tool_element(file, *c, k_oms_ns, "oms", "FixedStepSolver")) {
+      file.fail(*c, "OMSimulator's " + std::string(xml_file::local(*c)) +
+                        " integrates Model Exchange FMUs as one system; Stride's SSP importer runs "
+                        "the components of an SSP for Co-Simulation and needs a fixed-step master "
+                        "(oms:FixedStepMaster stepSize) or Stride's system annotation");
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace stride::cosim::detail::ssp
