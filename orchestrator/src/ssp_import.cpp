@@ -468,32 +468,6 @@ class ssd_reader {
   ssd_content content_;
 };
 
-// Stride's annotation alone decides step and algorithm when it is there (an archive Stride
-// exported carries the other tools' too); else the other tools' annotations, which must agree.
-void take_stepping(const ssd_content& content, system_structure& s) {
-  s.base_step = content.step;
-  s.algorithm = content.algorithm.value_or(algorithm_kind::gauss_seidel);
-  if (content.stride_annotation) {
-    s.notes.stepping_from =
-        "Stride's annotation (org.stride-sim.system) at " + content.stride_annotation->str();
-    return;
-  }
-  if (content.tool_steppings.empty()) return;
-  const tool_stepping& first = content.tool_steppings.front();
-  s.notes.stepping_from = first.source;
-  for (const auto& other : content.tool_steppings) {
-    if (other.step != first.step) {
-      throw validation_error(other.where.str() + ": the step " + format_seconds(other.step) +
-                             " s of " + other.source + " differs from the step " +
-                             format_seconds(first.step) + " s of " + first.source +
-                             "; give one step (or Stride's system annotation, or --step)");
-    }
-    if (&other != &first) s.notes.stepping_from += " and " + other.source;
-  }
-  s.base_step = first.step;
-  s.algorithm = first.algorithm;
-}
-
 }  // namespace
 }  // namespace ssp
 

@@ -150,6 +150,10 @@ struct ssd_content {
   std::vector<std::string> ignored_annotations;      ///< "TYPE at FILE:LINE", in document order
 };
 
+/// Sets the base step and algorithm of `s` from `content`: Stride's annotation alone when it is
+/// there, else the other tools' annotations (which must agree). \throws validation_error
+void take_stepping(const ssd_content& content, system_structure& s);
+
 /// Stride's <Record> (in its system annotation): <record> of the system XML, read exactly.
 record_spec read_record_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
 /// Stride's <Agents> (in its system annotation): <agents> of the system XML.

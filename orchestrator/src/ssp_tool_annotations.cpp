@@ -2,8 +2,10 @@
 // (docs/ssp.md, "Other tools' annotations"): libcosim (type com.opensimulationplatform, in the
 // ssd:DefaultExperiment) and OMSimulator (type org.openmodelica, on the top ssd:System). Both
 // tools' fixed-step masters step every component from the same communication point with the
-// inputs of the last one, which is Stride's Jacobi algorithm.
+// inputs of the last one, which is Stride's Jacobi algorithm. Stride's own annotation wins over
+// them.
 #include "ssp_model.hpp"
+#include "stride/cosim/error.hpp"
 
 namespace stride::cosim::detail::ssp {
 
@@ -87,6 +89,32 @@ std::optional<tool_stepping> read_oms_stepping(const xml_file& file, const XMLEl
     }
   }
   return std::nullopt;
+}
+
+// Stride's annotation alone decides step and algorithm when it is there (an archive Stride
+// exported carries the other tools' too); else the other tools' annotations, which must agree.
+void take_stepping(const ssd_content& content, system_structure& s) {
+  s.base_step = content.step;
+  s.algorithm = content.algorithm.value_or(algorithm_kind::gauss_seidel);
+  if (content.stride_annotation) {
+    s.notes.stepping_from =
+        "Stride's annotation (org.stride-sim.system) at " + content.stride_annotation->str();
+    return;
+  }
+  if (content.tool_steppings.empty()) return;
+  const tool_stepping& first = content.tool_steppings.front();
+  s.notes.stepping_from = first.source;
+  for (const auto& other : content.tool_steppings) {
+    if (other.step != first.step) {
+      throw validation_error(other.where.str() + ": the step " + format_seconds(other.step) +
+                             " s of " + other.source + " differs from the step " +
+                             format_seconds(first.step) + " s of " + first.source +
+                             "; give one step (or Stride's system annotation, or --step)");
+    }
+    if (&other != &first) s.notes.stepping_from += " and " + other.source;
+  }
+  s.base_step = first.step;
+  s.algorithm = first.algorithm;
 }
 
 }  // namespace stride::cosim::detail::ssp
