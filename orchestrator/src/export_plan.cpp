@@ -83,8 +83,9 @@ void export_plan::add_component(const component_spec& c, const std::vector<fs::p
     refuse_export(format_, c.where,
                   who + "runs on worker '" + c.worker + "' (placement is a Stride setting)");
   }
-  if (c.kind == "model-exchange" || c.model_exchange) {
-    refuse_export(format_, c.where, who + "Model Exchange (the importers run Co-Simulation)");
+  if ((c.kind == "model-exchange" || c.model_exchange) && !ssp()) {
+    refuse_export(format_, c.where,
+                  who + "Model Exchange (OSP runs Co-Simulation; SSP export keeps it)");
   }
   const fs::path file = resolve_fmu(c, system_, search);
   const std::string where = c.where.str().empty() ? std::string() : c.where.str() + ": ";

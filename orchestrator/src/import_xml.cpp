@@ -202,11 +202,6 @@ const model_description& fmu_facts::of(const fs::path& fmu, const std::string& w
       throw fmu_import_error(fmu.string() + ": no modelDescription.xml at the archive root");
     }
     model_description md = parse_model_description(file);
-    if (!md.co_simulation) {
-      throw validation_error(
-          "the FMU supports Model Exchange only; Stride runs FMUs for "
-          "Co-Simulation");
-    }
     return known_.emplace(fmu, std::move(md)).first->second;
   } catch (const std::exception& e) {
     throw validation_error(where + e.what());

@@ -116,8 +116,7 @@ class xml_file {
 /// into a temporary folder and removed again).
 class fmu_facts {
  public:
-  /// \throws validation_error naming `where` when the FMU cannot be read or offers no
-  /// Co-Simulation.
+  /// \throws validation_error naming `where` when the FMU cannot be read.
   const model_description& of(const std::filesystem::path& fmu, const std::string& where);
 
  private:

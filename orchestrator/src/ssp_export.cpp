@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "export_plan.hpp"
+#include "integrator_attributes.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/system_export.hpp"
@@ -121,15 +122,21 @@ class ssd_writer {
       XMLElement* e = elements->InsertNewChildElement("ssd:Component");
       e->SetAttribute("name", c.spec->name.c_str());
       e->SetAttribute("source", detail::uri_path("resources/" + plan_.fmus()[c.fmu].name).c_str());
+      if (c.spec->kind == "model-exchange") e->SetAttribute("implementation", "ModelExchange");
+      if (c.spec->kind == "co-simulation") e->SetAttribute("implementation", "CoSimulation");
       if (!c.connectors.empty()) write_connectors(e->InsertNewChildElement("ssd:Connectors"), c);
-      if (!c.spec->worker.empty() || !c.placeholders.empty()) write_component_annotation(e, c);
+      if (!c.spec->worker.empty() || !c.placeholders.empty() || c.spec->model_exchange) {
+        write_component_annotation(e, c);
+      }
     }
   }
 
-  // what is Stride's alone: the worker the component runs on, and values the run fills in
+  // what is Stride's alone: the worker the component runs on, the integrator of a Model Exchange
+  // component, and values the run fills in
   static void write_component_annotation(XMLElement* e, const detail::export_component& c) {
     XMLElement* a = add_annotation(e, k_component_annotation, "stride:Component");
     if (!c.spec->worker.empty()) a->SetAttribute("worker", c.spec->worker.c_str());
+    if (c.spec->model_exchange) detail::write_integrator(*a, *c.spec->model_exchange);
     for (const auto& v : c.placeholders) {
       XMLElement* value = a->InsertNewChildElement("stride:Value");
       value->SetAttribute("name", v.variable->name.c_str());

@@ -272,23 +272,38 @@ class binder {
   std::vector<assignment> out_;
 };
 
-void add_components(const element& e, system_structure& system) {
+// The components below `e`; `solver`: the integrator the nearest enclosing system gives its
+// Model Exchange components (OMSimulator's solver annotation), which a component's own wins over.
+void add_components(const element& e, system_structure& system,
+                    const std::optional<model_exchange_options>& solver) {
   for (const auto& child : e.children) {
     if (child.system) {
-      add_components(child, system);
+      add_components(child, system, child.model_exchange ? child.model_exchange : solver);
       continue;
     }
     component_spec& c = system.add_component(child.path, child.fmu);
     c.worker = child.worker;
     c.parameters = child.stride_values;  // the bindings (applied next) replace or follow them
     c.where = child.where;
+    c.kind = child.kind;
+    c.model_exchange = child.model_exchange;
+    if (!solver || c.model_exchange) continue;
+    if (c.kind == "co-simulation" || !child.description->model_exchange) {
+      throw validation_error(child.origin + "the system '" + (e.path.empty() ? e.name : e.path) +
+                             "' integrates Model Exchange FMUs (OMSimulator's solver "
+                             "annotation), but this component " +
+                             (c.kind == "co-simulation" ? "has implementation=\"CoSimulation\""
+                                                        : "has an FMU without Model Exchange"));
+    }
+    c.kind = "model-exchange";
+    c.model_exchange = solver;
   }
 }
 
 }  // namespace
 
 void flatten(const ssd_content& content, system_structure& system, const log_sink& log) {
-  add_components(content.top, system);
+  add_components(content.top, system, content.top.model_exchange);
   system.connections = connection_graph(content).connections();
   for (auto& a : binder(content, log).assignments()) {
     component_spec& c = *system.find_component(a.component);

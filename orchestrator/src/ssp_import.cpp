@@ -5,6 +5,7 @@
 #include <functional>
 #include <set>
 
+#include "integrator_attributes.hpp"
 #include "ssp_model.hpp"
 #include "stride/cosim/error.hpp"
 
@@ -23,9 +24,9 @@ constexpr std::string_view k_component_annotation = "org.stride-sim.component";
 // where an Annotations element stands: which of Stride's annotations it may hold
 enum class annotated { other, system, connection, component };
 
-// where another tool's step and algorithm may stand: libcosim's in the ssd:DefaultExperiment,
-// OMSimulator's on the top ssd:System
-enum class tool_place { none, experiment, top_system };
+// where another tool's step, algorithm or integrator may stand: libcosim's in the
+// ssd:DefaultExperiment, OMSimulator's on an ssd:System (its master on the top one)
+enum class tool_place { none, experiment, top_system, nested_system };
 
 constexpr std::string_view k_osp_annotation = "com.opensimulationplatform";
 constexpr std::string_view k_oms_annotation = "org.openmodelica";
@@ -121,8 +122,9 @@ class ssd_reader {
                        file_.fail(c, "signal dictionaries are not supported (SSP 1.0 part 'ssb')");
                      }
                      if (local == "Annotations") {
+                       system_ = &s;
                        read_annotations(c, top ? annotated::system : annotated::other, {},
-                                        top ? tool_place::top_system : tool_place::none);
+                                        top ? tool_place::top_system : tool_place::nested_system);
                      }
                    });
     return s;
@@ -191,12 +193,9 @@ class ssd_reader {
                         "(application/x-fmu-sharedlibrary), not nested SSPs");
     }
     const std::string implementation = file_.attribute(e, "implementation").value_or("any");
-    if (implementation == "ModelExchange") {
-      file_.fail(e,
-                 "implementation=\"ModelExchange\" is not supported: Stride runs FMUs for "
-                 "Co-Simulation");
-    }
-    if (implementation != "any" && implementation != "CoSimulation") {
+    if (implementation == "ModelExchange") c.kind = "model-exchange";
+    if (implementation == "CoSimulation") c.kind = "co-simulation";
+    if (implementation != "any" && c.kind.empty()) {
       file_.fail(
           e, "implementation=\"" + implementation + "\" is not any, CoSimulation or ModelExchange");
     }
@@ -216,10 +215,15 @@ class ssd_reader {
     return c;
   }
 
-  // Stride's component annotation: the worker and the values no SSP type holds
+  // Stride's component annotation: the worker, the integrator of a Model Exchange component and
+  // the values no SSP type holds
   void read_stride_component(const XMLElement& s, element& c) const {
-    file_.allow_attributes(s, {"worker"});
+    file_.allow_attributes(s, {"worker", "solver", "method", "rtol", "atol", "max_step"});
     if (file_.attribute(s, "worker")) c.worker = file_.required(s, "worker");
+    component_spec integrated;
+    integrated.kind = c.kind;
+    read_integrator(s, integrated, [&](const std::string& message) { file_.fail(s, message); });
+    c.model_exchange = integrated.model_exchange;
     file_.children(s, {{k_stride_ns, "Value", 0, true}}, [&](const XMLElement& v, auto) {
       file_.allow_attributes(v, {"name", "value"});
       const std::string name = file_.required(v, "name");
@@ -406,17 +410,26 @@ class ssd_reader {
   }
 
   void read_tool_annotation(const XMLElement& a, const std::string& type, tool_place place) {
-    std::optional<tool_stepping> found;
+    bool read = false;
     if (place == tool_place::experiment && type == k_osp_annotation) {
-      found = read_osp_stepping(file_, a);
-    } else if (place == tool_place::top_system && type == k_oms_annotation) {
-      found = read_oms_stepping(file_, a);
+      if (auto found = read_osp_stepping(file_, a)) {
+        content_.tool_steppings.push_back(std::move(*found));
+        read = true;
+      }
+    } else if (type == k_oms_annotation &&
+               (place == tool_place::top_system || place == tool_place::nested_system)) {
+      oms_simulation found = read_oms_simulation(file_, a);
+      // a nested system's master would step inside Stride's one: it is not read
+      if (found.master && place == tool_place::top_system) {
+        content_.tool_steppings.push_back(std::move(*found.master));
+        read = true;
+      }
+      if (found.solver) {
+        system_->model_exchange = found.solver;
+        read = true;
+      }
     }
-    if (found) {
-      content_.tool_steppings.push_back(std::move(*found));
-    } else {
-      content_.ignored_annotations.push_back(type + " at " + file_.at(a).str());
-    }
+    if (!read) content_.ignored_annotations.push_back(type + " at " + file_.at(a).str());
   }
 
   // the one element of Stride's namespace inside a Stride annotation
@@ -466,6 +479,7 @@ class ssd_reader {
   fmu_facts& facts_;  // outlives the content: its elements point at the descriptions
   std::vector<std::unique_ptr<unit_table>>& keep_;
   ssd_content content_;
+  element* system_ = nullptr;  // the system whose annotations are being read
 };
 
 }  // namespace

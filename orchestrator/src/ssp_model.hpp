@@ -92,6 +92,11 @@ struct element {
   bool system = false;
   std::string fmu;     ///< component: the component_spec's fmu text
   std::string worker;  ///< component: Stride's component annotation (placement); "" in process
+  /// component: "model-exchange" or "co-simulation" from its implementation; "" for any
+  std::string kind;
+  /// component: its integrator (Stride's component annotation); system: the integrator of its
+  /// components (OMSimulator's solver annotation)
+  std::optional<model_exchange_options> model_exchange;
   /// component: values from Stride's component annotation (placeholders the run substitutes)
   std::vector<parameter_setting> stride_values;
   const model_description* description = nullptr;  ///< component: its FMU's
@@ -128,11 +133,15 @@ struct tool_stepping {
 /// osp:Algorithm/osp:FixedStepAlgorithm baseStepSize. nullopt when it names no algorithm.
 std::optional<tool_stepping> read_osp_stepping(const xml_file& file,
                                                const tinyxml2::XMLElement& annotation);
-/// OMSimulator's annotation (type org.openmodelica) of the top ssd:System:
-/// [oms:Annotations/]oms:SimulationInformation/oms:FixedStepMaster stepSize. nullopt when it
-/// names no master. \throws validation_error for a solver of Model Exchange systems.
-std::optional<tool_stepping> read_oms_stepping(const xml_file& file,
-                                               const tinyxml2::XMLElement& annotation);
+/// What OMSimulator's annotation (type org.openmodelica) of an ssd:System says:
+/// [oms:Annotations/]oms:SimulationInformation holding oms:FixedStepMaster stepSize (a
+/// co-simulation master), or oms:VariableStepSolver / oms:FixedStepSolver (the integrator of
+/// the system's Model Exchange FMUs). Both empty when it says neither.
+struct oms_simulation {
+  std::optional<tool_stepping> master;
+  std::optional<model_exchange_options> solver;
+};
+oms_simulation read_oms_simulation(const xml_file& file, const tinyxml2::XMLElement& annotation);
 
 /// Everything read from one SSD (and the files it refers to).
 struct ssd_content {

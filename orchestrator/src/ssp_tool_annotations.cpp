@@ -1,9 +1,9 @@
-// Step size and master algorithm as two other SSP tools write them into their own annotations
-// (docs/ssp.md, "Other tools' annotations"): libcosim (type com.opensimulationplatform, in the
-// ssd:DefaultExperiment) and OMSimulator (type org.openmodelica, on the top ssd:System). Both
-// tools' fixed-step masters step every component from the same communication point with the
-// inputs of the last one, which is Stride's Jacobi algorithm. Stride's own annotation wins over
-// them.
+// Step size, master algorithm and integrator as two other SSP tools write them into their own
+// annotations (docs/ssp.md, "Other tools' annotations"): libcosim (type
+// com.opensimulationplatform, in the ssd:DefaultExperiment) and OMSimulator (type
+// org.openmodelica, on its ssd:Systems). Both tools' fixed-step masters step every component from
+// the same communication point with the inputs of the last one, which is Stride's Jacobi
+// algorithm. Stride's own annotation wins over them.
 #include "ssp_model.hpp"
 #include "stride/cosim/error.hpp"
 
@@ -40,12 +40,35 @@ duration positive_step(const xml_file& file, const XMLElement& e, const char* at
   return step;
 }
 
+std::optional<double> positive_number(const xml_file& file, const XMLElement& e,
+                                      const char* attribute) {
+  const std::optional<double> v = file.real(e, attribute);
+  if (v && *v <= 0) file.fail(e, std::string(attribute) + " must be positive");
+  return v;
+}
+
 tool_stepping stepping(const xml_file& file, const XMLElement& annotation, const XMLElement& at,
                        duration step, std::string_view tool) {
   return {step, algorithm_kind::jacobi,
           std::string(tool) + " (" + file.attribute(annotation, "type").value_or("") + ") at " +
               file.at(at).str(),
           file.at(at)};
+}
+
+// OMSimulator's CVODE settings; its minimumStepSize and initialStepSize have no counterpart in
+// Stride's integrator, which chooses those itself
+model_exchange_options variable_step_solver(const xml_file& file, const XMLElement& e) {
+  if (const auto d = file.attribute(e, "description"); d && *d != "cvode") {
+    file.fail(e, "OMSimulator's variable-step solver \"" + *d +
+                     "\" is not supported: Stride integrates with cvode");
+  }
+  model_exchange_options o;
+  o.rtol = positive_number(file, e, "relativeTolerance");
+  o.atol = positive_number(file, e, "absoluteTolerance");
+  if (e.Attribute("maximumStepSize") != nullptr) {
+    o.max_step = to_seconds(positive_step(file, e, "maximumStepSize"));
+  }
+  return o;
 }
 
 }  // namespace
@@ -69,26 +92,27 @@ std::optional<tool_stepping> read_osp_stepping(const xml_file& file, const XMLEl
                   "libcosim's annotation");
 }
 
-std::optional<tool_stepping> read_oms_stepping(const xml_file& file, const XMLElement& annotation) {
+oms_simulation read_oms_simulation(const xml_file& file, const XMLElement& annotation) {
   // newer files wrap the content in oms:Annotations, older ones do not
   const XMLElement* content = tool_child(file, annotation, k_oms_ns, "oms", "Annotations");
   if (content == nullptr) content = &annotation;
   const XMLElement* info = tool_child(file, *content, k_oms_ns, "oms", "SimulationInformation");
-  if (info == nullptr) return std::nullopt;
+  oms_simulation out;
+  if (info == nullptr) return out;
   for (const XMLElement* c = info->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
     if (is_tool_element(file, *c, k_oms_ns, "oms", "FixedStepMaster")) {
-      return stepping(file, annotation, *c, positive_step(file, *c, "stepSize"),
-                      "OMSimulator's annotation");
-    }
-    if (is_tool_element(file, *c, k_oms_ns, "oms", "VariableStepSolver") ||
-        is_tool_element(file, *c, k_oms_ns, "oms", "FixedStepSolver")) {
-      file.fail(*c, "OMSimulator's " + std::string(xml_file::local(*c)) +
-                        " integrates Model Exchange FMUs as one system; Stride's SSP importer runs "
-                        "the components of an SSP for Co-Simulation and needs a fixed-step master "
-                        "(oms:FixedStepMaster stepSize) or Stride's system annotation");
+      out.master = stepping(file, annotation, *c, positive_step(file, *c, "stepSize"),
+                            "OMSimulator's annotation");
+    } else if (is_tool_element(file, *c, k_oms_ns, "oms", "VariableStepSolver")) {
+      out.solver = variable_step_solver(file, *c);
+    } else if (is_tool_element(file, *c, k_oms_ns, "oms", "FixedStepSolver")) {
+      model_exchange_options o;
+      o.solver = model_exchange_options::solver_kind::euler;
+      o.max_step = to_seconds(positive_step(file, *c, "stepSize"));
+      out.solver = o;
     }
   }
-  return std::nullopt;
+  return out;
 }
 
 // Stride's annotation alone decides step and algorithm when it is there (an archive Stride

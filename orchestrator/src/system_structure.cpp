@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <sstream>
 
+#include "integrator_attributes.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
@@ -340,42 +341,7 @@ class system_reader {
         fail(line, "kind=\"" + c.kind + "\" is not co-simulation or model-exchange");
       }
     }
-    const bool settings = e->Attribute("solver") || e->Attribute("method") ||
-                          e->Attribute("rtol") || e->Attribute("atol") || e->Attribute("max_step");
-    if (!settings) return;
-    if (c.kind == "co-simulation") {
-      fail(line,
-           "solver, method, rtol, atol and max_step apply to kind=\"model-exchange\" only "
-           "(a Co-Simulation FMU integrates itself)");
-    }
-    model_exchange_options o;
-    using me = model_exchange_options;
-    const std::string solver = e->Attribute("solver") ? required(e, "solver") : "cvode";
-    if (solver == "euler") {
-      o.solver = me::solver_kind::euler;
-    } else if (solver != "cvode") {
-      fail(line, "solver=\"" + solver + "\" is not cvode or euler");
-    }
-    if (e->Attribute("method")) {
-      const std::string method = required(e, "method");
-      if (method != "bdf" && method != "adams") {
-        fail(line, "method=\"" + method + "\" is not bdf or adams");
-      }
-      if (o.solver == me::solver_kind::euler) fail(line, "method applies to solver=\"cvode\" only");
-      o.method = method == "adams" ? me::method_kind::adams : me::method_kind::bdf;
-    }
-    for (const char* name : {"rtol", "atol", "max_step"}) {
-      if (!e->Attribute(name)) continue;
-      const double v = finite(e, name, 0.0);
-      if (v <= 0) fail(line, std::string(name) + "=\"" + e->Attribute(name) + "\" must be > 0");
-      (std::string_view(name) == "rtol"   ? o.rtol
-       : std::string_view(name) == "atol" ? o.atol
-                                          : o.max_step) = v;
-    }
-    if (o.solver == me::solver_kind::euler && !o.max_step) {
-      fail(line, "solver=\"euler\" needs max_step (its fixed step in seconds)");
-    }
-    c.model_exchange = o;
+    detail::read_integrator(*e, c, [&](const std::string& message) { fail(line, message); });
   }
 
   double finite(const tinyxml2::XMLElement* e, const char* name, double fallback) const {
@@ -528,16 +494,7 @@ namespace {
 
 void write_kind(tinyxml2::XMLElement* e, const component_spec& c) {
   if (!c.kind.empty()) e->SetAttribute("kind", c.kind.c_str());
-  if (!c.model_exchange) return;
-  const auto& o = *c.model_exchange;
-  using me = model_exchange_options;
-  e->SetAttribute("solver", o.solver == me::solver_kind::euler ? "euler" : "cvode");
-  if (o.solver == me::solver_kind::cvode) {
-    e->SetAttribute("method", o.method == me::method_kind::adams ? "adams" : "bdf");
-  }
-  if (o.rtol) e->SetAttribute("rtol", text::format_double(*o.rtol).c_str());
-  if (o.atol) e->SetAttribute("atol", text::format_double(*o.atol).c_str());
-  if (o.max_step) e->SetAttribute("max_step", text::format_double(*o.max_step).c_str());
+  if (c.model_exchange) detail::write_integrator(*e, *c.model_exchange);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/execution.hpp"
 #include "stride/cosim/system_builder.hpp"
+#include "stride/cosim/system_import.hpp"
 #include "zip_writer.hpp"
 
 namespace stride::cosim {
@@ -94,6 +95,79 @@ TEST_F(me_system_test, solver_settings_on_a_co_simulation_fmu_are_refused) {
   s.components[1].model_exchange.reset();
   s.components[1].kind = "model-exchange";
   EXPECT_THROW(build_system(s), fmu_import_error);  // stride_test has no <ModelExchange>
+}
+
+// OMSimulator's shape: a master system at 0.1 s with the source, holding a solver system whose
+// CVODE settings integrate the decay. It runs step for step as the system built here with the
+// same integrator and Jacobi (the fixed-step master's algorithm).
+TEST_F(me_system_test, an_ssp_solver_system_integrates_its_model_exchange_fmu_as_said) {
+  fs::create_directories(dir_.path() / "ssp" / "resources");
+  fs::copy_file(decay_, dir_.path() / "ssp" / "resources" / "decay.fmu");
+  fs::copy_file(fs::path(STRIDE_FMU_DIR) / "stride_test.fmu",
+                dir_.path() / "ssp" / "resources" / "stride_test.fmu");
+  std::ofstream(dir_.path() / "ssp" / "SystemStructure.ssd") << R"(<?xml version="1.0"?>
+<ssd:SystemStructureDescription version="1.0" name="decay"
+    xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription"
+    xmlns:ssc="http://ssp-standard.org/SSP1/SystemStructureCommon"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues"
+    xmlns:oms="https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd">
+  <ssd:System name="wc">
+    <ssd:Elements>
+      <ssd:Component name="source" source="resources/stride_test.fmu">
+        <ssd:ParameterBindings><ssd:ParameterBinding><ssd:ParameterValues>
+          <ssv:ParameterSet version="1.0" name="p"><ssv:Parameters>
+            <ssv:Parameter name="gain"><ssv:Real value="0"/></ssv:Parameter>
+            <ssv:Parameter name="offset"><ssv:Real value="0.5"/></ssv:Parameter>
+          </ssv:Parameters></ssv:ParameterSet>
+        </ssd:ParameterValues></ssd:ParameterBinding></ssd:ParameterBindings>
+      </ssd:Component>
+      <ssd:System name="sc">
+        <ssd:Connectors>
+          <ssd:Connector name="u" kind="input"/><ssd:Connector name="x" kind="output"/>
+        </ssd:Connectors>
+        <ssd:Elements><ssd:Component name="decay" source="resources/decay.fmu"/></ssd:Elements>
+        <ssd:Connections>
+          <ssd:Connection startConnector="u" endElement="decay" endConnector="u"/>
+          <ssd:Connection startElement="decay" startConnector="x" endConnector="x"/>
+        </ssd:Connections>
+        <ssd:Annotations><ssc:Annotation type="org.openmodelica"><oms:Annotations>
+          <oms:SimulationInformation>
+            <oms:VariableStepSolver description="cvode" absoluteTolerance="1e-12" relativeTolerance="1e-9"/>
+          </oms:SimulationInformation>
+        </oms:Annotations></ssc:Annotation></ssd:Annotations>
+      </ssd:System>
+    </ssd:Elements>
+    <ssd:Connections>
+      <ssd:Connection startElement="source" startConnector="y" endElement="sc" endConnector="u"/>
+      <ssd:Connection startElement="sc" startConnector="x" endElement="source" endConnector="u"/>
+    </ssd:Connections>
+    <ssd:Annotations><ssc:Annotation type="org.openmodelica"><oms:Annotations>
+      <oms:SimulationInformation><oms:FixedStepMaster description="oms-ma" stepSize="0.1"/></oms:SimulationInformation>
+    </oms:Annotations></ssc:Annotation></ssd:Annotations>
+  </ssd:System>
+  <ssd:DefaultExperiment startTime="0" stopTime="2"/>
+</ssd:SystemStructureDescription>
+)";
+  const system_structure imported = load_system_file(dir_.path() / "ssp");
+  system_structure here = system(2.0);
+  here.components[0].name = "sc.decay";
+  here.connections[0].to = "sc.decay.u";
+  here.connections[1].from = "sc.decay.x";
+  here.algorithm = algorithm_kind::jacobi;
+
+  std::vector<double> expected, actual;
+  for (auto* out : {&expected, &actual}) {
+    auto built = build_system(out == &expected ? here : imported);
+    const auto x = observe(*built.execution, "sc.decay", "x");
+    built.execution->initialize(built.stop);
+    while (built.execution->current_time() < built.stop) {
+      built.execution->step();
+      out->push_back(built.execution->real_value(x));
+    }
+  }
+  ASSERT_EQ(expected.size(), 20u);
+  EXPECT_EQ(actual, expected);
+  EXPECT_NEAR(expected.back(), 0.5 + 0.5 * std::exp(-2.0), 1e-3);  // Jacobi lags one step of u
 }
 
 // a checkpoint of the whole system, restored into a fresh build, continues bit for bit

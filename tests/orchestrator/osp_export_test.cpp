@@ -115,6 +115,10 @@ TEST_F(osp_export, what_osp_cannot_say_is_refused_naming_it) {
   EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: component 'a': runs on worker 'far'"));
   // what the SSP export keeps in Stride's annotations
   s = in_code();
+  s.find_component("b")->kind = "model-exchange";
+  EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: component 'b': Model Exchange (OSP "
+                                    "runs Co-Simulation; SSP export keeps it)"));
+  s = in_code();
   s.groups.push_back({"w", 2, {s.components.front()}, {}, {}});
   s.groups.back().components.front().name = "c";
   EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: replica group 'w': the copies' names "

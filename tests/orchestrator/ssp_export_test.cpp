@@ -250,6 +250,35 @@ TEST_F(ssp_export, the_step_is_also_written_as_libcosim_and_omsimulator_read_it)
   EXPECT_THAT(back.notes.stepping_from, HasSubstr("and libcosim's annotation"));
 }
 
+TEST_F(ssp_export, model_exchange_components_keep_their_kind_and_integrator) {
+  test::write_fake_fmu(scratch.path() / "fmus" / "me.fmu", test::stride_test_variables(), false);
+  system_structure s = in_code();
+  component_spec& b = *s.find_component("b");
+  b.fmu = "fmus/me.fmu";
+  b.kind = "model-exchange";
+  model_exchange_options o;
+  o.method = model_exchange_options::method_kind::adams;
+  o.rtol = 1e-8;
+  o.max_step = 0.5;
+  b.model_exchange = o;
+  s.find_component("a")->kind = "co-simulation";
+  const fs::path archive = scratch.path() / "me.ssp";
+  export_ssp(s, archive, options);
+  const std::string ssd = entries(archive).at("SystemStructure.ssd");
+  EXPECT_THAT(ssd, HasSubstr(R"(implementation="ModelExchange")"));
+  EXPECT_THAT(ssd, HasSubstr(R"(<stride:Component solver="cvode" method="adams" rtol="1e-08" )"
+                             R"(max_step="0.5"/>)"));
+  const system_structure back = load_system_file(archive);
+  EXPECT_EQ(back.components.at(0).kind, "co-simulation");
+  const component_spec& b_back = back.components.at(1);
+  EXPECT_EQ(b_back.kind, "model-exchange");
+  ASSERT_TRUE(b_back.model_exchange.has_value());
+  EXPECT_EQ(b_back.model_exchange->method, model_exchange_options::method_kind::adams);
+  EXPECT_EQ(b_back.model_exchange->rtol, 1e-8);
+  EXPECT_EQ(b_back.model_exchange->atol, std::nullopt);
+  EXPECT_EQ(b_back.model_exchange->max_step, 0.5);
+}
+
 TEST_F(ssp_export, default_recording_writes_no_record_annotation) {
   const fs::path archive = scratch.path() / "pair.ssp";
   export_ssp(system_xml(), archive, options);
@@ -276,9 +305,6 @@ TEST_F(ssp_export, what_the_system_xml_says_beyond_ssp_is_refused_naming_file_an
 
 TEST_F(ssp_export, components_that_ssp_cannot_hold_are_refused) {
   system_structure s = in_code();
-  s.find_component("b")->kind = "model-exchange";
-  EXPECT_THAT(refusal(s), HasSubstr("component 'b': Model Exchange"));
-  s = in_code();
   s.find_component("b")->step_multiple = 2;
   EXPECT_THAT(refusal(s), HasSubstr("component 'b' steps every 2 base steps (SSP has no step "
                                     "multiple; OSP has)"));

@@ -252,8 +252,8 @@ TEST_F(ssp_import, unsupported_features_are_refused_by_name) {
                    R"(<ssd:Elements><ssd:SignalDictionaryReference name="r" dictionary="d"/>)"),
           "<ssd:SignalDictionaryReference", "signal dictionary references are not supported");
   refused(replaced(pair(k_plain), R"(name="b" source)",
-                   R"(name="b" implementation="ModelExchange" source)"),
-          R"(name="b" implementation)", "Co-Simulation");
+                   R"(name="b" implementation="Scheduled" source)"),
+          R"(name="b" implementation)", "is not any, CoSimulation or ModelExchange");
   refused(replaced(pair(k_plain), R"(name="b" source)",
                    R"(name="b" type="application/x-ssp-package" source)"),
           R"(name="b" type)", "not nested SSPs");
@@ -286,13 +286,41 @@ TEST_F(ssp_import, stride_annotations_are_read_only_where_they_belong) {
               HasSubstr("a second Stride annotation (the first at "));
 }
 
-TEST_F(ssp_import, a_component_whose_fmu_has_no_co_simulation_is_refused) {
+TEST_F(ssp_import, model_exchange_components_take_their_integrator_from_strides_annotation) {
   test::write_fake_fmu(scratch.path() / "resources" / "me.fmu", test::stride_test_variables(),
                        false);
-  EXPECT_THAT(refusal(replaced(pair(k_plain), R"(name="b" source="resources/stride_test.fmu")",
-                               R"(name="b" source="resources/me.fmu")"),
-                      "resources/me.fmu"),
-              HasSubstr("<ssd:Component name=\"b\">: the FMU supports Model Exchange only"));
+  const std::string me_only =
+      replaced(pair(k_plain), R"(name="b" source="resources/stride_test.fmu")",
+               R"(name="b" source="resources/me.fmu")");
+  // an FMU that offers Model Exchange only needs nothing more (the run integrates it)
+  const system_structure plain = load(me_only);
+  EXPECT_EQ(plain.components.at(1).kind, "");
+  EXPECT_EQ(plain.components.at(1).model_exchange, std::nullopt);
+  const std::string annotated = replaced(
+      replaced(me_only, R"(name="b" source)", R"(name="b" implementation="ModelExchange" source)"),
+      R"(<ssd:Connector name="u" kind="input"></ssd:Connector></ssd:Connectors>)",
+      R"(<ssd:Connector name="u" kind="input"></ssd:Connector></ssd:Connectors>
+        <ssd:Annotations><ssc:Annotation type="org.stride-sim.component">
+          <stride:Component solver="cvode" method="adams" rtol="1e-8" atol="1e-10" max_step="0.5"/>
+        </ssc:Annotation></ssd:Annotations>)");
+  const component_spec& b = load(annotated).components.at(1);
+  EXPECT_EQ(b.kind, "model-exchange");
+  ASSERT_TRUE(b.model_exchange.has_value());
+  EXPECT_EQ(b.model_exchange->method, model_exchange_options::method_kind::adams);
+  EXPECT_EQ(b.model_exchange->rtol, 1e-8);
+  EXPECT_EQ(b.model_exchange->atol, 1e-10);
+  EXPECT_EQ(b.model_exchange->max_step, 0.5);
+  // the integrator of a Co-Simulation component, and bad settings, are refused with the line
+  EXPECT_THAT(refusal(replaced(annotated, "ModelExchange", "CoSimulation"), "<stride:Component"),
+              HasSubstr("apply to kind=\"model-exchange\" only"));
+  EXPECT_THAT(refusal(replaced(annotated, R"(rtol="1e-8")", R"(rtol="-1")"), "<stride:Component"),
+              HasSubstr("rtol=\"-1\" must be > 0"));
+  EXPECT_THAT(
+      refusal(replaced(annotated,
+                       R"(solver="cvode" method="adams" rtol="1e-8" atol="1e-10" max_step="0.5")",
+                       R"(solver="euler")"),
+              "<stride:Component"),
+      HasSubstr("solver=\"euler\" needs max_step"));
 }
 
 TEST_F(ssp_import, connectors_must_match_their_fmu_variables) {

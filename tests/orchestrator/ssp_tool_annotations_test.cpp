@@ -38,8 +38,10 @@ std::string with_osp(const std::string& step) {
   return pair(k_plain) + replaced(k_osp_step, "STEP", step);
 }
 
-std::string with_oms(const std::string& body, const std::string& step) {
-  return replaced(body, "</ssd:System>", replaced(k_oms_on_system, "STEP", step));
+// OMSimulator's master on the top system (the last to close)
+std::string with_oms(std::string body, const std::string& step) {
+  const std::string close = "</ssd:System>";
+  return body.replace(body.rfind(close), close.size(), replaced(k_oms_on_system, "STEP", step));
 }
 
 TEST_F(ssp_import, libcosims_annotation_gives_the_step_and_jacobi) {
@@ -119,11 +121,80 @@ TEST_F(ssp_import, what_the_tools_annotations_cannot_say_is_refused_with_its_lin
       replaced(with_oms(pair(k_plain), "0.1"),
                R"(<oms:FixedStepMaster description="oms-ma" stepSize="0.1"/>)",
                R"(<oms:VariableStepSolver description="cvode" absoluteTolerance="1e-4"/>)");
-  EXPECT_THAT(refusal(variable, "<oms:VariableStepSolver"),
-              HasSubstr("OMSimulator's VariableStepSolver integrates Model Exchange FMUs"));
+  EXPECT_THAT(refusal(variable, R"(<ssd:Component name="a")"),
+              HasSubstr("the system 'top' integrates Model Exchange FMUs (OMSimulator's solver "
+                        "annotation), but this component has an FMU without Model Exchange"));
+  EXPECT_THAT(refusal(replaced(variable, R"(description="cvode")", R"(description="ida")"),
+                      "<oms:VariableStepSolver"),
+              HasSubstr("OMSimulator's variable-step solver \"ida\" is not supported"));
   EXPECT_THAT(
       refusal(replaced(with_osp("0.1"), "baseStepSize", "stepsize"), "<osp:FixedStepAlgorithm"),
       HasSubstr("unknown attribute 'stepsize'"));
+}
+
+// OMSimulator's usual shape: a weakly coupled top system (a master) holding a strongly coupled
+// one whose solver integrates its Model Exchange FMUs
+TEST_F(ssp_import, omsimulators_solver_system_integrates_its_model_exchange_components) {
+  test::write_fake_fmu(scratch.path() / "resources" / "me.fmu", test::stride_test_variables(),
+                       false);
+  const std::string body = with_oms(R"(
+  <ssd:System name="top">
+    <ssd:Elements>
+      <ssd:Component name="a" source="resources/stride_test.fmu"/>
+      <ssd:System name="sc">
+        <ssd:Elements>
+          <ssd:Component name="m" source="resources/me.fmu"/>
+          <ssd:Component name="own" source="resources/me.fmu">
+            <ssd:Annotations><ssc:Annotation type="org.stride-sim.component">
+              <stride:Component solver="euler" max_step="0.001"/>
+            </ssc:Annotation></ssd:Annotations>
+          </ssd:Component>
+        </ssd:Elements>
+        <ssd:Annotations>
+          <ssc:Annotation type="org.openmodelica">
+            <oms:Annotations xmlns:oms="https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd">
+              <oms:SimulationInformation>
+                <oms:VariableStepSolver description="cvode" absoluteTolerance="1e-10" relativeTolerance="1e-8" minimumStepSize="1e-12" maximumStepSize="0.002" initialStepSize="1e-6"/>
+              </oms:SimulationInformation>
+            </oms:Annotations>
+          </ssc:Annotation>
+        </ssd:Annotations>
+      </ssd:System>
+    </ssd:Elements>
+  </ssd:System>)",
+                                    "0.01");
+  const system_structure s = load(body);
+  EXPECT_EQ(s.base_step, std::chrono::milliseconds(10));
+  EXPECT_EQ(s.algorithm, algorithm_kind::jacobi);
+  ASSERT_EQ(s.components.size(), 3u);
+  EXPECT_EQ(s.components[0].name, "a");
+  EXPECT_EQ(s.components[0].model_exchange, std::nullopt);
+  const component_spec& m = s.components[1];
+  EXPECT_EQ(m.name, "sc.m");
+  EXPECT_EQ(m.kind, "model-exchange");
+  ASSERT_TRUE(m.model_exchange.has_value());
+  EXPECT_EQ(m.model_exchange->solver, model_exchange_options::solver_kind::cvode);
+  EXPECT_EQ(m.model_exchange->rtol, 1e-8);
+  EXPECT_EQ(m.model_exchange->atol, 1e-10);
+  EXPECT_EQ(m.model_exchange->max_step, 0.002);
+  // a component's own integrator wins over its system's
+  ASSERT_TRUE(s.components[2].model_exchange.has_value());
+  EXPECT_EQ(s.components[2].model_exchange->solver, model_exchange_options::solver_kind::euler);
+  EXPECT_EQ(s.components[2].model_exchange->max_step, 0.001);
+  // OMSimulator's fixed-step solver is explicit Euler at its step
+  const std::string euler = replaced(
+      body,
+      R"(<oms:VariableStepSolver description="cvode" absoluteTolerance="1e-10" relativeTolerance="1e-8" minimumStepSize="1e-12" maximumStepSize="0.002" initialStepSize="1e-6"/>)",
+      R"(<oms:FixedStepSolver description="euler" stepSize="0.0005"/>)");
+  const component_spec& e = load(euler).components.at(1);
+  EXPECT_EQ(e.model_exchange->solver, model_exchange_options::solver_kind::euler);
+  EXPECT_EQ(e.model_exchange->max_step, 0.0005);
+  // a Co-Simulation component inside the solver's system has no place there
+  EXPECT_THAT(refusal(replaced(body, R"(<ssd:Component name="m" source)",
+                               R"(<ssd:Component name="m" implementation="CoSimulation" source)"),
+                      R"(<ssd:Component name="m")"),
+              HasSubstr("the system 'sc' integrates Model Exchange FMUs (OMSimulator's solver "
+                        "annotation), but this component has implementation=\"CoSimulation\""));
 }
 
 TEST_F(ssp_import, other_annotations_are_listed_as_not_read_with_their_place) {

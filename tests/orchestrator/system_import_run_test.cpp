@@ -217,12 +217,15 @@ TEST_F(import_run, the_pair_as_libcosim_and_omsimulator_write_it_runs_as_their_j
             read_file(scratch.path() / "gauss-seidel" / "results.csv"));
 
   const std::string variable = read_file(oms / "Variable.ssd");
-  const auto line = std::count(variable.begin(),
-                               variable.begin() + variable.find("<oms:VariableStepSolver"), '\n') +
-                    1;
-  refused("run " + quoted(archive) + " --ssd Variable.ssd --quiet",
-          archive.string() + "/Variable.ssd:" + std::to_string(line) + ": <oms:VariableStepSolver",
-          "OMSimulator's VariableStepSolver integrates Model Exchange FMUs");
+  const auto line =
+      std::count(variable.begin(), variable.begin() + variable.find(R"(<ssd:Component name="a")"),
+                 '\n') +
+      1;
+  refused(
+      "run " + quoted(archive) + " --ssd Variable.ssd --quiet",
+      archive.string() + "/Variable.ssd:" + std::to_string(line) + ": <ssd:Component name=\"a\">",
+      "the system 'pair' integrates Model Exchange FMUs (OMSimulator's solver annotation), but "
+      "this component has an FMU without Model Exchange");
   refused("validate " + quoted(archive) + " --ssd Missing.ssd",
           archive.string() + ": no Missing.ssd at its root",
           "the .ssd files there: SystemStructure.ssd, Variable.ssd");
