@@ -1,11 +1,12 @@
-// The SSP and OSP importers (libstride) on arbitrary bytes: the input read as an .ssd and as an
-// OspSystemStructure.xml, beside an FMU "m.fmu" that declares a few variables (no binary: the
-// importers read model descriptions only), so that components, connections and parameters are
-// reached.
+// The SSP and OSP importers (libstride) on arbitrary bytes: the input read as an .ssd, as an
+// OspSystemStructure.xml and as the .ssv parameter set (with its .ssm mapping) of a fixed SSD,
+// beside an FMU "m.fmu" that declares a few variables (no binary: the importers read model
+// descriptions only), so that components, connections and parameters are reached.
 #include <zip.h>
 
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "fuzz_input.hpp"
@@ -27,6 +28,34 @@ constexpr std::string_view k_model_description = R"(<?xml version="1.0" encoding
   <ModelStructure/>
 </fmiModelDescription>
 )";
+
+// binds "p.ssv" through the mapping "p.ssm" to the component m
+constexpr std::string_view k_binding_ssd = R"(<?xml version="1.0" encoding="UTF-8"?>
+<ssd:SystemStructureDescription version="1.0" name="bind"
+    xmlns:ssd="http://ssp-standard.org/SSP1/SystemStructureDescription">
+  <ssd:System name="top">
+    <ssd:Elements>
+      <ssd:Component name="m" source="m.fmu">
+        <ssd:ParameterBindings>
+          <ssd:ParameterBinding source="p.ssv"/>
+          <ssd:ParameterBinding source="p.ssv"><ssd:ParameterMapping source="p.ssm"/></ssd:ParameterBinding>
+        </ssd:ParameterBindings>
+      </ssd:Component>
+    </ssd:Elements>
+  </ssd:System>
+</ssd:SystemStructureDescription>
+)";
+
+void write_text(const std::filesystem::path& file, std::string_view text) {
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+constexpr std::string_view k_empty_mapping = R"(<ssm:ParameterMapping version="1.0"
+    xmlns:ssm="http://ssp-standard.org/SSP1/SystemStructureParameterMapping"/>)";
+constexpr std::string_view k_plain_set = R"(<ssv:ParameterSet version="1.0" name="p"
+    xmlns:ssv="http://ssp-standard.org/SSP1/SystemStructureParameterValues">
+  <ssv:Parameters><ssv:Parameter name="g"><ssv:Real value="2"/></ssv:Parameter></ssv:Parameters>
+</ssv:ParameterSet>)";
 
 void write_fmu(const std::filesystem::path& file) {
   int error = 0;
@@ -55,5 +84,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto osp = input.dir() / "OspSystemStructure.xml";
   std::filesystem::copy_file(input.path(), osp);
   load(osp);
+  // the input as a parameter set, then as a parameter mapping
+  const auto dir = input.dir() / "bind";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(input.dir() / "m.fmu", dir / "m.fmu");
+  write_text(dir / "SystemStructure.ssd", k_binding_ssd);
+  std::filesystem::copy_file(input.path(), dir / "p.ssv");
+  write_text(dir / "p.ssm", k_empty_mapping);
+  load(dir);
+  write_text(dir / "p.ssv", k_plain_set);
+  std::filesystem::copy_file(input.path(), dir / "p.ssm",
+                             std::filesystem::copy_options::overwrite_existing);
+  load(dir);
   return 0;
 }

@@ -56,6 +56,47 @@ class system_import : public ::testing::Test {
   }
 };
 
+// the limits and checks of FMU archives hold for SSP archives, and what an SSD names must be there
+TEST_F(system_import, hostile_or_incomplete_archives_are_refused_naming_what_is_wrong) {
+  // an entry that inflates beyond the size its headers declare (a zip bomb's trick)
+  const fs::path bomb = archive("bomb.ssp", {{"resources/zeros.bin", std::string(200000, '\0')}});
+  std::string bytes = read(bomb);
+  const auto patch = [&](const std::string& signature, std::size_t offset) {
+    const auto at = bytes.find(signature);  // the first headers: resources/zeros.bin's
+    ASSERT_NE(at, std::string::npos);
+    for (int i = 0; i < 4; ++i) bytes[at + offset + i] = static_cast<char>(i == 0 ? 100 : 0);
+  };
+  patch(std::string("PK\x03\x04", 4), 22);
+  patch(std::string("PK\x01\x02", 4), 24);
+  std::ofstream(bomb, std::ios::binary | std::ios::trunc) << bytes;
+  EXPECT_THAT(error(bomb),
+              HasSubstr("entry \"resources/zeros.bin\" inflates beyond its declared size"));
+
+  // missing resources: the FMU, the parameter set
+  std::vector<test::zip_entry> only_ssd = {
+      {"SystemStructure.ssd", read(pair / "SystemStructure.ssd")}};
+  const fs::path no_fmu = scratch.path() / "nofmu.ssp";
+  test::write_zip(no_fmu,
+                  {only_ssd[0], {"resources/vectors.ssv", read(pair / "resources/vectors.ssv")}});
+  EXPECT_THAT(error(no_fmu),
+              HasSubstr("nofmu.ssp/SystemStructure.ssd:10: <ssd:Component name=\"a\">: "
+                        "FMU \"resources/stride_test.fmu\" not found"));
+  const fs::path no_ssv = scratch.path() / "nossv.ssp";
+  test::write_zip(
+      no_ssv,
+      {only_ssd[0], {"resources/stride_test.fmu", read(pair / "resources/stride_test.fmu")}});
+  EXPECT_THAT(error(no_ssv), HasSubstr("\"resources/vectors.ssv\" not found"));
+
+  // a cycle of nested systems cannot start: an SSD or SSP as a component is refused
+  std::string ssd = read(pair / "SystemStructure.ssd");
+  const std::string from = R"(name="b" source="resources/stride_test.fmu")";
+  ssd.replace(ssd.find(from), from.size(),
+              R"(name="b" type="application/x-ssp-definition" source="SystemStructure.ssd")");
+  EXPECT_THAT(error(archive("cycle.ssp", {{"SystemStructure.ssd", ssd}}, false)),
+              HasSubstr("cycle.ssp/SystemStructure.ssd:36: <ssd:Component name=\"b\">: type "
+                        "\"application/x-ssp-definition\" is not supported"));
+}
+
 TEST_F(system_import, the_format_follows_from_the_path) {
   EXPECT_EQ(detect_system_format(pair), system_format::ssp_folder);
   EXPECT_EQ(detect_system_format(pair / "SystemStructure.ssd"), system_format::ssd);
