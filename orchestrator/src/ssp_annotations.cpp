@@ -1,10 +1,11 @@
-// The run settings Stride's system annotation carries besides step and algorithm (docs/ssp.md,
-// "Stride's annotations"): what to record and how many agents run the system. Their attributes
-// are those of <record> and <agents> in the system XML, so that an exported system reads back
-// exactly as it was written.
+// What Stride's annotations carry besides step and algorithm (docs/ssp.md, "Stride's
+// annotations"): what to record and how many agents run the system; where a component runs, its
+// step multiple, integrator and the values no SSP type holds. Their attributes are those of the
+// system XML's, so that an exported system reads back exactly as it was written.
 #include <charconv>
 #include <sstream>
 
+#include "integrator_attributes.hpp"
 #include "ssp_model.hpp"
 #include "xml_util.hpp"
 
@@ -56,6 +57,30 @@ agents_spec read_agents_annotation(const xml_file& file, const XMLElement& e) {
     if (a.workers.empty()) file.fail(e, "workers=\"\" names no worker");
   }
   return a;
+}
+
+void read_component_annotation(const xml_file& file, const XMLElement& s, element& c) {
+  file.allow_attributes(
+      s, {"worker", "step_multiple", "solver", "method", "rtol", "atol", "max_step"});
+  if (file.attribute(s, "worker")) c.worker = file.required(s, "worker");
+  if (const auto m = file.attribute(s, "step_multiple")) {
+    const auto [end, error] = std::from_chars(m->data(), m->data() + m->size(), c.step_multiple);
+    if (error != std::errc() || end != m->data() + m->size() || c.step_multiple < 1) {
+      file.fail(s, "step_multiple=\"" + *m + "\" is not a positive integer");
+    }
+  }
+  component_spec integrated;
+  integrated.kind = c.kind;
+  read_integrator(s, integrated, [&](const std::string& message) { file.fail(s, message); });
+  c.model_exchange = integrated.model_exchange;
+  file.children(s, {{k_stride_ns, "Value", 0, true}}, [&](const XMLElement& v, auto) {
+    file.allow_attributes(v, {"name", "value"});
+    const std::string name = file.required(v, "name");
+    if (c.description->find(name) == nullptr) {
+      file.fail(v, "the FMU of '" + c.path + "' has no variable \"" + name + "\"");
+    }
+    c.stride_values.push_back({name, file.required(v, "value"), file.at(v)});
+  });
 }
 
 }  // namespace stride::cosim::detail::ssp

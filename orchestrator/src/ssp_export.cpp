@@ -125,17 +125,19 @@ class ssd_writer {
       if (c.spec->kind == "model-exchange") e->SetAttribute("implementation", "ModelExchange");
       if (c.spec->kind == "co-simulation") e->SetAttribute("implementation", "CoSimulation");
       if (!c.connectors.empty()) write_connectors(e->InsertNewChildElement("ssd:Connectors"), c);
-      if (!c.spec->worker.empty() || !c.placeholders.empty() || c.spec->model_exchange) {
+      if (!c.spec->worker.empty() || !c.placeholders.empty() || c.spec->model_exchange ||
+          c.spec->step_multiple != 1) {
         write_component_annotation(e, c);
       }
     }
   }
 
-  // what is Stride's alone: the worker the component runs on, the integrator of a Model Exchange
-  // component, and values the run fills in
+  // what is Stride's alone: the worker the component runs on, its step multiple, the integrator
+  // of a Model Exchange component, and values the run fills in
   static void write_component_annotation(XMLElement* e, const detail::export_component& c) {
     XMLElement* a = add_annotation(e, k_component_annotation, "stride:Component");
     if (!c.spec->worker.empty()) a->SetAttribute("worker", c.spec->worker.c_str());
+    if (c.spec->step_multiple != 1) a->SetAttribute("step_multiple", c.spec->step_multiple);
     if (c.spec->model_exchange) detail::write_integrator(*a, *c.spec->model_exchange);
     for (const auto& v : c.placeholders) {
       XMLElement* value = a->InsertNewChildElement("stride:Value");
@@ -291,14 +293,6 @@ export_report export_ssp(const system_structure& system, const fs::path& archive
   }
   detail::check_export_target(archive, false, options.overwrite);
   const detail::export_plan plan(system, options.fmu_search_path, "SSP");
-  for (const auto& c : plan.components()) {
-    if (c.spec->step_multiple != 1) {
-      detail::refuse_export("SSP", c.spec->where,
-                            "component '" + c.spec->name + "' steps every " +
-                                std::to_string(c.spec->step_multiple) +
-                                " base steps (SSP has no step multiple; OSP has)");
-    }
-  }
   ssd_writer writer(plan);
   const std::string ssd = writer.ssd();
   const std::string ssv = writer.has_values() ? ssv_text(plan) : std::string();

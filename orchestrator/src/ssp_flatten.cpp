@@ -281,7 +281,7 @@ void add_components(const element& e, system_structure& system,
       add_components(child, system, child.model_exchange ? child.model_exchange : solver);
       continue;
     }
-    component_spec& c = system.add_component(child.path, child.fmu);
+    component_spec& c = system.add_component(child.path, child.fmu, child.step_multiple);
     c.worker = child.worker;
     c.parameters = child.stride_values;  // the bindings (applied next) replace or follow them
     c.where = child.where;

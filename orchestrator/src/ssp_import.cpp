@@ -5,7 +5,6 @@
 #include <functional>
 #include <set>
 
-#include "integrator_attributes.hpp"
 #include "ssp_model.hpp"
 #include "stride/cosim/error.hpp"
 
@@ -209,29 +208,11 @@ class ssd_reader {
                     {k_ssd_ns, "Annotations", 3}},
                    [&](const XMLElement& x, std::string_view local) {
                      if (read_element_child(x, local, c)) return;
-                     read_annotations(x, annotated::component,
-                                      [&](const XMLElement& s) { read_stride_component(s, c); });
+                     read_annotations(x, annotated::component, [&](const XMLElement& s) {
+                       read_component_annotation(file_, s, c);
+                     });
                    });
     return c;
-  }
-
-  // Stride's component annotation: the worker, the integrator of a Model Exchange component and
-  // the values no SSP type holds
-  void read_stride_component(const XMLElement& s, element& c) const {
-    file_.allow_attributes(s, {"worker", "solver", "method", "rtol", "atol", "max_step"});
-    if (file_.attribute(s, "worker")) c.worker = file_.required(s, "worker");
-    component_spec integrated;
-    integrated.kind = c.kind;
-    read_integrator(s, integrated, [&](const std::string& message) { file_.fail(s, message); });
-    c.model_exchange = integrated.model_exchange;
-    file_.children(s, {{k_stride_ns, "Value", 0, true}}, [&](const XMLElement& v, auto) {
-      file_.allow_attributes(v, {"name", "value"});
-      const std::string name = file_.required(v, "name");
-      if (c.description->find(name) == nullptr) {
-        file_.fail(v, "the FMU of '" + c.path + "' has no variable \"" + name + "\"");
-      }
-      c.stride_values.push_back({name, file_.required(v, "value"), file_.at(v)});
-    });
   }
 
   void read_connectors(const XMLElement& e, element& owner) {

@@ -90,8 +90,9 @@ struct element {
   std::string name;  ///< as in the SSD
   std::string path;  ///< the dotted Stride name ("" for the top system)
   bool system = false;
-  std::string fmu;     ///< component: the component_spec's fmu text
-  std::string worker;  ///< component: Stride's component annotation (placement); "" in process
+  std::string fmu;        ///< component: the component_spec's fmu text
+  std::string worker;     ///< component: Stride's component annotation (placement); "" in process
+  int step_multiple = 1;  ///< component: Stride's component annotation
   /// component: "model-exchange" or "co-simulation" from its implementation; "" for any
   std::string kind;
   /// component: its integrator (Stride's component annotation); system: the integrator of its
@@ -167,6 +168,10 @@ void take_stepping(const ssd_content& content, system_structure& s);
 record_spec read_record_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
 /// Stride's <Agents> (in its system annotation): <agents> of the system XML.
 agents_spec read_agents_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
+
+/// Stride's component annotation (its stride:Component `s`) into the component `c`: worker,
+/// step multiple, integrator and stride:Value values.
+void read_component_annotation(const xml_file& file, const tinyxml2::XMLElement& s, element& c);
 
 /// Reads the ParameterBinding children of a ParameterBindings element into `into` (one entry
 /// per binding). `base` resolves relative sources; `units` are the SSD's (Real values may name
