@@ -47,26 +47,6 @@ system_structure load_system(const std::optional<fs::path>& file, const run_exte
                            "(embedded) " + std::string(ext.default_system_name));
 }
 
-// --step and --algorithm: the base step and master algorithm, whatever the system says
-void apply_stepping(system_structure& system, const std::optional<std::string>& step,
-                    const std::optional<std::string>& algorithm) {
-  if (step) {
-    try {
-      system.base_step = parse_duration(*step);
-    } catch (const std::exception& e) {
-      throw validation_error(std::string("--step: ") + e.what());
-    }
-    if (*system.base_step <= duration::zero()) throw validation_error("--step must be positive");
-  }
-  if (algorithm) {
-    if (*algorithm != "gauss-seidel" && *algorithm != "jacobi") {
-      throw validation_error("--algorithm " + *algorithm + ": not gauss-seidel or jacobi");
-    }
-    system.algorithm =
-        *algorithm == "jacobi" ? algorithm_kind::jacobi : algorithm_kind::gauss_seidel;
-  }
-}
-
 const char* yes_no(bool b) {
   return b ? "true" : "false";
 }
@@ -155,6 +135,26 @@ int inspect_system(const fs::path& file) {
 }
 
 }  // namespace
+
+// --step and --algorithm: the base step and master algorithm, whatever the system says
+void apply_stepping(system_structure& system, const std::optional<std::string>& step,
+                    const std::optional<std::string>& algorithm) {
+  if (step) {
+    try {
+      system.base_step = parse_duration(*step);
+    } catch (const std::exception& e) {
+      throw validation_error(std::string("--step: ") + e.what());
+    }
+    if (*system.base_step <= duration::zero()) throw validation_error("--step must be positive");
+  }
+  if (algorithm) {
+    if (*algorithm != "gauss-seidel" && *algorithm != "jacobi") {
+      throw validation_error("--algorithm " + *algorithm + ": not gauss-seidel or jacobi");
+    }
+    system.algorithm =
+        *algorithm == "jacobi" ? algorithm_kind::jacobi : algorithm_kind::gauss_seidel;
+  }
+}
 
 std::vector<std::string> record_patterns(const std::vector<std::string>& values) {
   std::vector<std::string> patterns;

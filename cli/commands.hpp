@@ -81,6 +81,11 @@ int test(const test_arguments& args, const stride::suite::assertion_registry& ki
 /// `stride inspect`: an FMU's model description, or (any other file) a system's components and
 /// where each runs.
 int inspect(const std::filesystem::path& file);
+
+/// --step and --algorithm of run, validate and sweep: replace the system's base step and master
+/// algorithm when given. \throws cosim::validation_error for a bad value.
+void apply_stepping(cosim::system_structure& system, const std::optional<std::string>& step,
+                    const std::optional<std::string>& algorithm);
 int validate(const validate_arguments& args);
 
 }  // namespace stride::cli

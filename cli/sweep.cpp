@@ -15,6 +15,7 @@
 #include <sstream>
 #include <thread>
 
+#include "commands.hpp"
 #include "stop_signals.hpp"
 #include "stride/common/files.hpp"
 #include "stride/common/text.hpp"
@@ -243,11 +244,15 @@ struct point_outcome {
 
 // The settings that decide a point's result: a second sweep into the same folder must use the
 // same, or its kept points would belong to another sweep.
-std::string settings_text(const fs::path& system, const std::string& stop_time,
-                          const std::vector<std::string>& grids,
-                          const std::vector<std::string>& sets) {
-  std::string text = "system = " + fs::absolute(system).lexically_normal().string() + "\n";
-  text += "stop_time = " + (stop_time.empty() ? std::string("(the system's)") : stop_time) + "\n";
+std::string settings_text(const sweep_arguments& args) {
+  std::string text = "system = " + fs::absolute(args.system).lexically_normal().string() + "\n";
+  text +=
+      "stop_time = " + (args.stop_time.empty() ? std::string("(the system's)") : args.stop_time) +
+      "\n";
+  if (args.step) text += "step = " + *args.step + "\n";
+  if (args.algorithm) text += "algorithm = " + *args.algorithm + "\n";
+  const auto& grids = args.grids;
+  const auto& sets = args.sets;
   for (const auto& g : grids) text += "grid = " + g + "\n";
   for (const auto& s : sets) text += "set = " + s + "\n";
   return text;
@@ -372,6 +377,7 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
   // --- everything that can be wrong with the arguments, before anything runs
   if (args.grids.empty()) throw validation_error("--grid: give at least one");
   cosim::system_structure system = cosim::load_system_file(args.system);
+  apply_stepping(system, args.step, args.algorithm);
   std::vector<sweep_target> targets;
   for (const auto& g : args.grids) {
     targets.push_back(parse_sweep_grid(g));
@@ -453,7 +459,7 @@ int sweep(const sweep_arguments& args, const sweep_extension& extension) {
     named.name = system.name + "-sweep";
     dir = cosim::default_output_dir(named);
   }
-  const std::string settings = settings_text(args.system, args.stop_time, args.grids, args.sets);
+  const std::string settings = settings_text(args);
   check_settings(dir, settings);
   const fs::path points_dir = dir / "points";
 
@@ -696,6 +702,8 @@ CLI::App* add_sweep_command(CLI::App& app, sweep_extension extension) {
   cmd->add_option("--output,-o", args->output,
                   "Output folder (default ./stride-out/<system>-sweep-<YYYYmmdd-HHMMSS>)");
   cmd->add_option("--stop-time", args->stop_time, "Stop time in seconds (replaces the XML's)");
+  cmd->add_option("--step", args->step, "Base step in seconds (replaces the system's)");
+  cmd->add_option("--algorithm", args->algorithm, "gauss-seidel or jacobi (replaces the system's)");
   args->jobs = std::max(1, cosim::default_thread_count());
   cmd->add_option("--jobs,-j", args->jobs, "Points run at the same time (threads)")
       ->capture_default_str()

@@ -97,8 +97,10 @@ struct sweep_arguments {
   std::vector<std::string> grids;
   std::vector<std::string> sets;
   std::vector<std::string> collect;
-  std::filesystem::path output;  ///< empty: ./stride-out/<system>-sweep-<stamp>
-  std::string stop_time;         ///< empty: the system's
+  std::filesystem::path output;          ///< empty: ./stride-out/<system>-sweep-<stamp>
+  std::string stop_time;                 ///< empty: the system's
+  std::optional<std::string> step;       ///< --step: the base step in seconds
+  std::optional<std::string> algorithm;  ///< --algorithm: gauss-seidel or jacobi
   int jobs = 1;
   bool quiet = false;
   /// point k (in the order they are started) runs on workers[k % size] (`stride worker`); empty:

@@ -97,6 +97,8 @@ TEST_F(sweep_cli, bad_arguments_are_one_line_errors_naming_the_argument) {
       {"--grid a.gain=2:1:1", "'2:1:1': need step > 0 and max >= min"},
       {"--grid nosuch.gain=1:2:1", "--grid 'nosuch.gain=1:2:1': "},
       {"--grid a.gain=1:2:1 --stop-time soon", "--stop-time: "},
+      {"--grid a.gain=1:2:1 --step 0", "--step must be positive"},
+      {"--grid a.gain=1:2:1 --algorithm newton", "--algorithm newton: not gauss-seidel or jacobi"},
       {"--grid a.gain=1:2:1 --set a.gain=3", "--set 'a.gain=3': a.gain is swept by --grid"},
       {"--grid a.gain=1:2:1 --collect nothing", "--collect 'nothing': expected"},
       {"--grid a.gain=1:2:1 --collect speed-map", "sweep one learner's eval_point"},
@@ -131,6 +133,24 @@ TEST_F(sweep_cli, a_point_equals_stride_run_of_that_point) {
     expect_same_files(scratch.path() / "out" / "points" / point,
                       scratch.path() / ("single_" + std::string(point)));
   }
+}
+
+// --step and --algorithm reach every point, and a sweep into the same folder must repeat them
+TEST_F(sweep_cli, the_step_and_algorithm_given_apply_to_every_point) {
+  const std::string sweep =
+      "sweep " + quoted(k_pair) + " --grid a.gain=1:2:1 --stop-time 0.05 --quiet --output out";
+  const auto r = stride(sweep + " --step 0.005 --algorithm jacobi");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto single = stride("run " + quoted(k_pair) +
+                             " --quiet --stop-time 0.05 --set a.gain=2 --step 0.005 "
+                             "--algorithm jacobi --output single");
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  expect_same_files(scratch.path() / "out" / "points" / "2", scratch.path() / "single");
+  // the header and t = 0, 0.005, ..., 0.05: the step given, not the system's 0.01
+  EXPECT_EQ(line_count(read(scratch.path() / "single" / "results.csv")), 12u);
+  const auto other = stride(sweep + " --step 0.01");
+  EXPECT_EQ(other.exit_code, 1);
+  EXPECT_THAT(other.err, HasSubstr("out"));
 }
 
 TEST_F(sweep_cli, failed_points_are_reported_the_others_tabled_and_finished_ones_kept) {
