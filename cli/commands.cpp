@@ -307,13 +307,12 @@ int inspect(const fs::path& file) {
   if (file.extension() != ".fmu") return inspect_system(file);
   const fs::path& fmu_file = file;
   // only the model description is needed: no binary is loaded
-  temp_dir dir("stride-inspect-");
-  extract_archive(fmu_file, dir.path());
-  const fs::path md_file = dir.path() / "modelDescription.xml";
-  if (!fs::is_regular_file(md_file)) {
+  const std::optional<std::string> text = read_archive_entry(fmu_file, "modelDescription.xml");
+  if (!text) {
     throw fmu_import_error(fmu_file.string() + ": no modelDescription.xml at the archive root");
   }
-  const model_description md = parse_model_description(md_file);
+  const model_description md =
+      parse_model_description_text(*text, (fmu_file / "modelDescription.xml").string());
   std::ostringstream out;
   int key_width = 22;
   auto row = [&](const char* key, const std::string& value) {

@@ -90,16 +90,8 @@ const char* unsafe_name_reason(const std::string& name) {
   return nullptr;
 }
 
-}  // namespace
-
-void extract_archive(const fs::path& archive, const fs::path& destination,
-                     const extract_limits& limits) {
-  const std::string where = archive.string();
-  auto fail = [&](const std::string& message) -> void {
-    throw fmu_import_error(where + ": " + message);
-  };
-  if (!fs::is_regular_file(archive)) fail("file not found");
-
+std::unique_ptr<zip_t, zip_closer> open_zip(const fs::path& archive) {
+  if (!fs::is_regular_file(archive)) throw fmu_import_error(archive.string() + ": file not found");
   int error_code = 0;
   std::unique_ptr<zip_t, zip_closer> za(zip_open(archive.c_str(), ZIP_RDONLY, &error_code));
   if (!za) {
@@ -107,8 +99,58 @@ void extract_archive(const fs::path& archive, const fs::path& destination,
     zip_error_init_with_code(&ze, error_code);
     std::string message = std::string("not a zip archive: ") + zip_error_strerror(&ze);
     zip_error_fini(&ze);
-    fail(message);
+    throw fmu_import_error(archive.string() + ": " + message);
   }
+  return za;
+}
+
+}  // namespace
+
+std::optional<std::string> read_archive_entry(const fs::path& archive, const std::string& name,
+                                              std::uint64_t max_size) {
+  const auto za = open_zip(archive);
+  const auto fail = [&](const std::string& message) {
+    throw fmu_import_error(archive.string() + ": entry \"" + name + "\" " + message);
+  };
+  const zip_int64_t index = zip_name_locate(za.get(), name.c_str(), ZIP_FL_ENC_RAW);
+  if (index < 0) return std::nullopt;
+  zip_stat_t st;
+  zip_stat_init(&st);
+  if (zip_stat_index(za.get(), static_cast<zip_uint64_t>(index), ZIP_FL_ENC_RAW, &st) != 0 ||
+      (st.valid & ZIP_STAT_SIZE) == 0) {
+    fail("cannot be read");
+  }
+  if (st.size > max_size) {
+    fail("is too large (" + std::to_string(st.size) + " bytes, limit " + std::to_string(max_size) +
+         ")");
+  }
+  std::unique_ptr<zip_file_t, zip_file_closer> zf(
+      zip_fopen_index(za.get(), static_cast<zip_uint64_t>(index), 0));
+  if (!zf) fail(std::string("cannot be opened: ") + zip_strerror(za.get()));
+  std::string text(static_cast<std::size_t>(st.size), '\0');
+  zip_uint64_t got = 0;
+  for (;;) {
+    // one byte more than declared is read to see whether the size lies
+    char spill = 0;
+    char* to = got < st.size ? text.data() + got : &spill;
+    const zip_uint64_t want = got < st.size ? st.size - got : 1;
+    const zip_int64_t n = zip_fread(zf.get(), to, want);
+    if (n < 0) fail(std::string("cannot be inflated: ") + zip_file_strerror(zf.get()));
+    if (n == 0) break;
+    got += static_cast<zip_uint64_t>(n);
+    if (got > st.size) fail("inflates beyond its declared size");
+  }
+  if (got != st.size) fail("is shorter than its declared size");
+  return text;
+}
+
+void extract_archive(const fs::path& archive, const fs::path& destination,
+                     const extract_limits& limits) {
+  const std::string where = archive.string();
+  auto fail = [&](const std::string& message) -> void {
+    throw fmu_import_error(where + ": " + message);
+  };
+  const auto za = open_zip(archive);
   const zip_int64_t count = zip_get_num_entries(za.get(), 0);
   if (count < 0 || static_cast<std::uint64_t>(count) > limits.max_entries) {
     fail("too many entries (" + std::to_string(count) + ")");

@@ -195,13 +195,13 @@ void xml_file::children(
 const model_description& fmu_facts::of(const fs::path& fmu, const std::string& where) {
   if (auto it = known_.find(fmu); it != known_.end()) return it->second;
   try {
-    temp_dir dir("stride-import-");
-    extract_archive(fmu, dir.path());
-    const fs::path file = dir.path() / "modelDescription.xml";
-    if (!fs::is_regular_file(file)) {
+    // only the description is inflated: the binaries are the run's business
+    const std::optional<std::string> text = read_archive_entry(fmu, "modelDescription.xml");
+    if (!text) {
       throw fmu_import_error(fmu.string() + ": no modelDescription.xml at the archive root");
     }
-    model_description md = parse_model_description(file);
+    model_description md =
+        parse_model_description_text(*text, (fmu / "modelDescription.xml").string());
     return known_.emplace(fmu, std::move(md)).first->second;
   } catch (const std::exception& e) {
     throw validation_error(where + e.what());

@@ -166,6 +166,46 @@ TEST_F(cosim_import, an_entry_longer_than_its_declared_size_is_refused) {
   EXPECT_TRUE(fs::is_empty(dest));
 }
 
+TEST_F(cosim_import, one_entry_is_read_alone_within_the_same_limits) {
+  const fs::path file = root.path() / "one.zip";
+  write_zip(file, {{"modelDescription.xml", "<fmiModelDescription/>"},
+                   {"binaries/linux64/big.so", std::string(300000, 'x')}});
+  EXPECT_EQ(read_archive_entry(file, "modelDescription.xml"), "<fmiModelDescription/>");
+  EXPECT_EQ(read_archive_entry(file, "missing.xml"), std::nullopt);
+  EXPECT_EQ(read_archive_entry(file, "binaries/linux64/big.so")->size(), 300000u);
+  try {
+    read_archive_entry(file, "binaries/linux64/big.so", 1000);
+    ADD_FAILURE() << "no error";
+  } catch (const fmu_import_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("entry \"binaries/linux64/big.so\" is too large (300000 "
+                                    "bytes, limit 1000)"));
+  }
+  // a size in the headers that the data does not keep
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto patch = [&](const std::string& signature, std::size_t offset) {
+    const auto at = bytes.find(signature);  // the first entry's headers
+    ASSERT_NE(at, std::string::npos);
+    for (int i = 0; i < 4; ++i) bytes[at + offset + i] = static_cast<char>(i == 0 ? 5 : 0);
+  };
+  patch(std::string("PK\x03\x04", 4), 22);
+  patch(std::string("PK\x01\x02", 4), 24);
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+  try {
+    read_archive_entry(file, "modelDescription.xml");
+    ADD_FAILURE() << "no error";
+  } catch (const fmu_import_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("entry \"modelDescription.xml\" inflates beyond its declared "
+                                    "size"));
+  }
+  std::ofstream(root.path() / "junk.zip") << "not a zip";
+  EXPECT_THROW(read_archive_entry(root.path() / "junk.zip", "modelDescription.xml"),
+               fmu_import_error);
+}
+
 TEST_F(cosim_import, rejects_backslashes_and_non_zip_files) {
   const fs::path fmu_file = root.path() / "win.fmu";
   write_zip(fmu_file, {{"binaries\\linux64\\demo.so", "x"}});

@@ -1,9 +1,10 @@
-// Safe extraction of FMU archives into private temporary directories.
+// Safe extraction of FMU archives into private temporary directories, and reading one entry.
 #ifndef STRIDE_COSIM_ARCHIVE_HPP
 #define STRIDE_COSIM_ARCHIVE_HPP
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace stride::cosim {
@@ -42,6 +43,14 @@ struct extract_limits {
 /// \throws fmu_import_error naming the archive and the entry.
 void extract_archive(const std::filesystem::path& archive, const std::filesystem::path& destination,
                      const extract_limits& limits = {});
+
+/// The content of the entry `name` of the zip archive `archive`, nullopt when it has none; only
+/// that entry is inflated (reading modelDescription.xml without unpacking the binaries).
+/// \throws fmu_import_error for an archive that is not a zip, and for an entry over `max_size`
+/// or that inflates to another size than it declares.
+std::optional<std::string> read_archive_entry(const std::filesystem::path& archive,
+                                              const std::string& name,
+                                              std::uint64_t max_size = std::uint64_t{64} << 20);
 
 }  // namespace stride::cosim
 
