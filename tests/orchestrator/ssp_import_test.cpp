@@ -303,7 +303,8 @@ TEST_F(ssp_import, model_exchange_components_take_their_integrator_from_strides_
         <ssd:Annotations><ssc:Annotation type="org.stride-sim.component">
           <stride:Component solver="cvode" method="adams" rtol="1e-8" atol="1e-10" max_step="0.5"/>
         </ssc:Annotation></ssd:Annotations>)");
-  const component_spec& b = load(annotated).components.at(1);
+  const system_structure with_integrator = load(annotated);
+  const component_spec& b = with_integrator.components.at(1);
   EXPECT_EQ(b.kind, "model-exchange");
   ASSERT_TRUE(b.model_exchange.has_value());
   EXPECT_EQ(b.model_exchange->method, model_exchange_options::method_kind::adams);

@@ -186,7 +186,8 @@ TEST_F(ssp_import, omsimulators_solver_system_integrates_its_model_exchange_comp
       body,
       R"(<oms:VariableStepSolver description="cvode" absoluteTolerance="1e-10" relativeTolerance="1e-8" minimumStepSize="1e-12" maximumStepSize="0.002" initialStepSize="1e-6"/>)",
       R"(<oms:FixedStepSolver description="euler" stepSize="0.0005"/>)");
-  const component_spec& e = load(euler).components.at(1);
+  const system_structure with_euler = load(euler);
+  const component_spec& e = with_euler.components.at(1);
   EXPECT_EQ(e.model_exchange->solver, model_exchange_options::solver_kind::euler);
   EXPECT_EQ(e.model_exchange->max_step, 0.0005);
   // a Co-Simulation component inside the solver's system has no place there
