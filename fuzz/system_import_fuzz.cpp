@@ -78,23 +78,28 @@ void load(const std::filesystem::path& file) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  namespace fs = std::filesystem;
   const stride::fuzz::input_file input(data, size, "fuzz.ssd");
+  // the harness's own file operations never throw: only the importers are under test
+  std::error_code ignored;
+  const auto copy = [&](const fs::path& from, const fs::path& to) {
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing, ignored);
+  };
   write_fmu(input.dir() / "m.fmu");
   load(input.path());
   const auto osp = input.dir() / "OspSystemStructure.xml";
-  std::filesystem::copy_file(input.path(), osp);
+  copy(input.path(), osp);
   load(osp);
   // the input as a parameter set, then as a parameter mapping
   const auto dir = input.dir() / "bind";
-  std::filesystem::create_directories(dir);
-  std::filesystem::copy_file(input.dir() / "m.fmu", dir / "m.fmu");
+  fs::create_directories(dir, ignored);
+  write_fmu(dir / "m.fmu");
   write_text(dir / "SystemStructure.ssd", k_binding_ssd);
-  std::filesystem::copy_file(input.path(), dir / "p.ssv");
+  copy(input.path(), dir / "p.ssv");
   write_text(dir / "p.ssm", k_empty_mapping);
   load(dir);
   write_text(dir / "p.ssv", k_plain_set);
-  std::filesystem::copy_file(input.path(), dir / "p.ssm",
-                             std::filesystem::copy_options::overwrite_existing);
+  copy(input.path(), dir / "p.ssm");
   load(dir);
   return 0;
 }
