@@ -82,6 +82,14 @@ std::string placement_table(const system_structure& system) {
     const std::string kind = kind_column(c);
     table += (kind.empty() ? "" : "  (" + kind + ")") + "\n";
   }
+  if (!system.failover.standby.empty()) {
+    std::string names;
+    for (const auto& w : system.failover.standby) names += (names.empty() ? "" : ", ") + w;
+    table +=
+        "  standby workers: " + names + " (a state image every " +
+        std::to_string(system.failover.snapshot_every.value_or(remote::k_default_snapshot_every)) +
+        " steps)\n";
+  }
   return table;
 }
 
@@ -156,6 +164,23 @@ void apply_stepping(system_structure& system, const std::optional<std::string>& 
   }
 }
 
+void apply_failover(system_structure& system, const std::vector<std::string>& standby,
+                    std::optional<int> snapshot_every) {
+  if (!standby.empty()) {
+    system.failover.standby.clear();
+    for (const auto& w : standby) {
+      if (w.empty()) throw validation_error("--standby: an empty worker name");
+      system.failover.standby.push_back(w);
+    }
+  }
+  if (snapshot_every) {
+    if (system.failover.standby.empty()) {
+      throw validation_error("--snapshot-every: no standby worker (--standby or <failover>)");
+    }
+    system.failover.snapshot_every = snapshot_every;
+  }
+}
+
 std::vector<std::string> record_patterns(const std::vector<std::string>& values) {
   std::vector<std::string> patterns;
   for (const auto& value : values) {
@@ -209,6 +234,7 @@ int run(const run_arguments& args, const run_extension& extension) {
   }
   system_structure system = load_system(system_file, extension, options.build.log);
   apply_stepping(system, args.step, args.algorithm);
+  apply_failover(system, args.standby, args.snapshot_every);
   if (!options.resume_dir.empty() && system.agents.count == 0 &&
       !fs::exists(checkpoint_file(options.resume_dir))) {
     // starting over: the results of the interrupted run stay as they are

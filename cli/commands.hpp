@@ -37,6 +37,8 @@ struct run_arguments {
   double worker_timeout = 10;            ///< seconds to wait for a worker to appear
   int agents = 0;                        ///< --agents: replaces the <agents> count (0: keep)
   std::vector<cosim::extra_record> extra_records;  ///< recordings beside the results
+  std::vector<std::string> standby;                ///< --standby: replaces the <failover> workers
+  std::optional<int> snapshot_every;               ///< --snapshot-every: replaces its interval
 };
 
 struct validate_arguments {
@@ -86,6 +88,10 @@ int inspect(const std::filesystem::path& file);
 /// algorithm when given. \throws cosim::validation_error for a bad value.
 void apply_stepping(cosim::system_structure& system, const std::optional<std::string>& step,
                     const std::optional<std::string>& algorithm);
+/// --standby and --snapshot-every: replace the system's <failover> workers and interval when
+/// given. \throws cosim::validation_error for an empty name, or an interval without standbys.
+void apply_failover(cosim::system_structure& system, const std::vector<std::string>& standby,
+                    std::optional<int> snapshot_every);
 int validate(const validate_arguments& args);
 
 }  // namespace stride::cli

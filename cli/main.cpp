@@ -18,6 +18,7 @@
 #include "stride/cosim/run.hpp"
 #include "stride/remote/keystore.hpp"
 #include "stride/remote/refused_peers.hpp"
+#include "stride/remote/remote_placement.hpp"
 #include "stride/remote/settings.hpp"
 #include "stride/study/run_hooks.hpp"
 #include "stride/study/suite_assertions.hpp"
@@ -125,6 +126,16 @@ int main(int argc, char** argv) {
                   "Seconds to wait for a worker named in the system to appear")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 3600.0));
+  run->add_option("--standby", run_args.standby,
+                  "Standby workers, separated by commas: a lost worker's components continue on "
+                  "the next one from their last state image, the results unchanged (replaces "
+                  "<failover standby>; docs/failover.md)")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  run->add_option("--snapshot-every", run_args.snapshot_every,
+                  "Steps between the state images of components with standby workers (default " +
+                      std::to_string(stride::remote::k_default_snapshot_every) + ")")
+      ->check(CLI::Range(1, 1000000000));
 
   std::string inspect_file;
   auto* inspect = app.add_subcommand(

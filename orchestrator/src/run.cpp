@@ -35,7 +35,20 @@ struct manifest_data {
   std::string resumed_from;              ///< the --resume folder, if any
   std::optional<time_point> resumed_at;  ///< continued from a checkpoint at this time
   std::string checkpoint;                ///< file name of the checkpoint written, if any
+  const std::vector<std::shared_ptr<placement_resolver>>* placements = nullptr;
 };
+
+// what the placements counted (failovers): "events": {"failovers": 1}, nothing when none counts
+void write_events(std::ostream& j, const manifest_data& m) {
+  if (m.placements == nullptr) return;
+  std::string fields;
+  for (const auto& p : *m.placements) {
+    for (const auto& [what, count] : p->events()) {
+      fields += (fields.empty() ? "" : ", ") + json_string(what) + ": " + std::to_string(count);
+    }
+  }
+  if (!fields.empty()) j << "  \"events\": {" << fields << "},\n";
+}
 
 std::string manifest_json(const manifest_data& m) {
   const auto& s = *m.system;
@@ -82,6 +95,7 @@ std::string manifest_json(const manifest_data& m) {
   }
   if (!m.checkpoint.empty()) j << "  \"checkpoint\": " << json_string(m.checkpoint) << ",\n";
   if (m.resumed_at) j << "  \"resumed_at\": " << format_seconds(*m.resumed_at) << ",\n";
+  write_events(j, m);
   j << "  \"wall_time_s\": " << json_number(r.wall_seconds) << ",\n";
   j << "  \"real_time_factor\": " << json_number(r.real_time_factor) << ",\n";
   // every value the system sets, so that a run can be told apart from another (seeds included)
@@ -436,6 +450,7 @@ run_report run_system(system_structure system, const run_options& options) {
   m.built = &built;
   m.report = &report;
   m.started = utc_now();
+  m.placements = &options.build.placements;
   if (resuming) m.resumed_from = fs::absolute(options.resume_dir).string();
   if (saved) m.resumed_at = saved->time;
   // the figures the progress display showed last: one timer, one definition

@@ -243,14 +243,16 @@ class system_reader {
     bool seen_simulation = false;
     bool seen_record = false;
     bool seen_agents = false;
+    bool seen_failover = false;
     child_order order("<system>",
                       {{"simulation", 0},
                        {"agents", 1},
-                       {"component", 2},
-                       {"replicate", 2},
-                       {"connection", 3},
-                       {"record", 4}},
-                      "simulation, agents, component and replicate, connection, record");
+                       {"failover", 2},
+                       {"component", 3},
+                       {"replicate", 3},
+                       {"connection", 4},
+                       {"record", 5}},
+                      "simulation, agents, failover, component and replicate, connection, record");
     for (auto* e = root->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
       const std::string_view tag = e->Name();
       order.check(e, *this);
@@ -272,10 +274,14 @@ class system_reader {
         if (seen_agents) fail(e->GetLineNum(), "more than one <agents>");
         seen_agents = true;
         read_agents(e, s.agents);
+      } else if (tag == "failover") {
+        if (seen_failover) fail(e->GetLineNum(), "more than one <failover>");
+        seen_failover = true;
+        read_failover(e, s.failover);
       } else {
         fail(e->GetLineNum(), "unknown element <" + std::string(tag) +
                                   "> (expected simulation, component, connection, replicate, "
-                                  "record or agents)");
+                                  "record, agents or failover)");
       }
     }
     if (s.components.empty() && s.groups.empty()) {
@@ -318,6 +324,15 @@ class system_reader {
       a.synchronous = *m == "synchronous";
     }
     a.where = at(e);
+  }
+
+  void read_failover(const tinyxml2::XMLElement* e, failover_spec& f) const {
+    check_attributes(e, {"standby", "snapshot-every"});
+    std::istringstream names(required(e, "standby"));
+    for (std::string name; names >> name;) f.standby.push_back(name);
+    if (f.standby.empty()) fail(e->GetLineNum(), "standby=\"\" names no worker");
+    if (e->Attribute("snapshot-every")) f.snapshot_every = positive_integer(e, "snapshot-every");
+    f.where = at(e);
   }
 
   connection_spec read_connection(const tinyxml2::XMLElement* e) const {
@@ -520,6 +535,13 @@ std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
       for (const auto& w : s.agents.workers) names += (names.empty() ? "" : " ") + w;
       a->SetAttribute("workers", names.c_str());
     }
+  }
+  if (!s.failover.standby.empty()) {
+    auto* f = root->InsertNewChildElement("failover");
+    std::string names;
+    for (const auto& w : s.failover.standby) names += (names.empty() ? "" : " ") + w;
+    f->SetAttribute("standby", names.c_str());
+    if (s.failover.snapshot_every) f->SetAttribute("snapshot-every", *s.failover.snapshot_every);
   }
   const auto write_component = [&](tinyxml2::XMLElement* parent, const component_spec& c) {
     auto* e = parent->InsertNewChildElement("component");

@@ -181,6 +181,8 @@ reply_data client::call_for(const std::string& who, dds_entity_t writer, const s
   reply_data reply;
   try {
     reply = call(writer, worker, r);
+  } catch (const worker_lost& e) {
+    throw worker_lost(where + e.what());
   } catch (const std::exception& e) {
     throw cosim::component_error(where + e.what());
   }
@@ -227,8 +229,9 @@ std::optional<reply_data> client::wait_reply(
       lock.lock();
       if (arrived_.find(seq) != arrived_.end()) continue;
       if (!still_there) {
-        throw std::runtime_error("worker '" + worker + "' is gone (its liveliness on DDS domain " +
-                                 std::to_string(settings_.domain) + " lapsed)");
+        abandoned_.insert(seq);  // should the worker come back and answer, it is dropped
+        throw worker_lost("worker '" + worker + "' is gone (its liveliness on DDS domain " +
+                          std::to_string(settings_.domain) + " lapsed)");
       }
       if (until && std::chrono::steady_clock::now() >= *until) {
         abandoned_.insert(seq);  // should it come after all, it is dropped

@@ -17,10 +17,18 @@
 
 #include "dds.hpp"
 #include "protocol.hpp"
+#include "stride/cosim/error.hpp"
 #include "stride/cosim/log.hpp"
 #include "stride/remote/settings.hpp"
 
 namespace stride::remote {
+
+/// A call that failed because its worker is gone (its liveliness lapsed): the call was not
+/// answered, and another worker may take over (failover_component.hpp).
+class worker_lost : public cosim::component_error {
+ public:
+  using cosim::component_error::component_error;
+};
 
 /// A reply, copied out of DDS.
 struct reply_data {
@@ -56,12 +64,12 @@ class client {
   dds_entity_t connect(const std::string& worker);
 
   /// Sends `r` (its run and sequence number are filled in here) and waits for the reply.
-  /// \throws std::runtime_error when the worker's liveliness lapses meanwhile.
+  /// \throws worker_lost when the worker's liveliness lapses meanwhile.
   reply_data call(dds_entity_t writer, const std::string& worker, stride_remote_request& r);
 
   /// call() on behalf of a component or group (`who`, e.g. "component 'x' on worker 'w'"): the
   /// reply's log lines go to `forward`; a lost worker or an error reply becomes a
-  /// cosim::component_error starting with `who` and the operation.
+  /// cosim::component_error starting with `who` and the operation (a worker_lost for the former).
   reply_data call_for(const std::string& who, dds_entity_t writer, const std::string& worker,
                       stride_remote_request& r,
                       const std::function<void(const reply_data::log_line&)>& forward);
@@ -70,7 +78,7 @@ class client {
   // writes `r` with this run's id and a fresh sequence number; returns the number
   std::uint64_t send(dds_entity_t writer, const std::string& worker, stride_remote_request& r);
   // waits for the reply to `seq` (`seen`: arrivals_ before sending); nullopt at `until`.
-  // \throws std::runtime_error when the worker's liveliness lapses meanwhile.
+  // \throws worker_lost when the worker's liveliness lapses meanwhile.
   std::optional<reply_data> wait_reply(std::uint64_t seq, std::uint64_t seen,
                                        const std::string& worker,
                                        std::optional<std::chrono::steady_clock::time_point> until);

@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include "client.hpp"
+#include "failover_component.hpp"
 #include "remote_component.hpp"
 #include "remote_group.hpp"
 #include "stride/cosim/archive.hpp"
@@ -38,6 +39,34 @@ cosim::model_description describe(const fs::path& file, const cosim::fmu_import_
   return cosim::parse_model_description(md);
 }
 
+// whether the instance of the kind chosen can give state images (failover needs them)
+bool saves_state(const cosim::model_description& md, bool model_exchange) {
+  if (model_exchange) {
+    return md.model_exchange && md.model_exchange->can_get_and_set_fmu_state &&
+           md.model_exchange->can_serialize_fmu_state;
+  }
+  return md.co_simulation && md.co_simulation->can_get_and_set_fmu_state &&
+         md.co_simulation->can_serialize_fmu_state;
+}
+
+// makes `worker` hold the archive: it keeps one from an earlier run, else it is sent
+void ship(client& link, const std::string& worker, const std::string& component,
+          const std::string& hash, const std::vector<std::byte>& archive, const fs::path& file) {
+  const dds_entity_t writer = link.connect(worker);
+  stride_remote_request r{};
+  r.op = static_cast<std::int32_t>(op::load);
+  r.component = const_cast<char*>(component.c_str());
+  r.text = const_cast<char*>(hash.c_str());
+  reply_data reply = link.call(writer, worker, r);
+  if (reply.result == status::need_archive) {
+    put_blob(archive, r.blob);
+    reply = link.call(writer, worker, r);
+  }
+  if (reply.result != status::ok) {
+    throw cosim::fmu_import_error("the worker cannot load " + file.string() + ": " + reply.message);
+  }
+}
+
 }  // namespace
 
 remote_placement::remote_placement(dds_settings settings, timeouts limits)
@@ -51,49 +80,67 @@ std::unique_ptr<cosim::component> remote_placement::create(
   const std::string where = (spec.where.str().empty() ? std::string() : spec.where.str() + ": ") +
                             "component '" + spec.name + "' on worker '" + spec.worker + "': ";
   const fs::path file = cosim::resolve_fmu(spec, *context.system, context.fmu_search_path);
-  std::vector<std::byte> archive;
-  cosim::model_description description;
-  std::string hash;
-  std::optional<cosim::model_exchange_options> model_exchange;
+  // what it takes to instantiate the component on any worker (a standby's too)
+  struct instance_recipe {
+    std::vector<std::byte> archive;
+    std::string hash;
+    cosim::model_description description;
+    std::optional<cosim::model_exchange_options> model_exchange;
+  };
+  auto recipe = std::make_shared<instance_recipe>();
   try {
-    archive = read_bytes(file, context.import.limits.max_total_size);
-    hash = content_hash(archive);
-    description = describe(file, context.import);
+    recipe->archive = read_bytes(file, context.import.limits.max_total_size);
+    recipe->hash = content_hash(recipe->archive);
+    recipe->description = describe(file, context.import);
     // the kind and the integrator settings travel with the instantiate request
-    model_exchange = cosim::model_exchange_choice(spec, description, file);
+    recipe->model_exchange = cosim::model_exchange_choice(spec, recipe->description, file);
+    if (!context.system->failover.standby.empty() &&
+        !saves_state(recipe->description, recipe->model_exchange.has_value())) {
+      throw cosim::fmu_import_error(
+          "cannot fail over to a standby worker (<failover>, --standby): its FMU cannot save "
+          "and serialize its state (canGetAndSetFMUstate, canSerializeFMUstate)");
+    }
   } catch (const cosim::error& e) {
     throw cosim::fmu_import_error(where + e.what());
   }
   try {
     if (!link_) link_ = std::make_shared<client>(settings_, limits_);
-    const dds_entity_t writer = link_->connect(spec.worker);
-    if (shipped_.insert({spec.worker, hash}).second) {
-      // ask first: a worker that has the archive from an earlier run keeps it
-      stride_remote_request r{};
-      r.op = static_cast<std::int32_t>(op::load);
-      r.component = const_cast<char*>(spec.name.c_str());
-      r.text = hash.data();
-      reply_data reply = link_->call(writer, spec.worker, r);
-      if (reply.result == status::need_archive) {
-        put_blob(archive, r.blob);
-        reply = link_->call(writer, spec.worker, r);
+    // also called during the run, on the thread of a component that fails over: it holds only
+    // what outlives this placement
+    auto instantiate = [link = link_, shipped = shipped_, recipe, file, name = spec.name,
+                        log = context.log,
+                        debug = context.fmu_debug_logging](const std::string& worker) {
+      {
+        std::lock_guard lock(shipped->mutex);
+        if (!shipped->pairs.contains({worker, recipe->hash})) {
+          ship(*link, worker, name, recipe->hash, recipe->archive, file);
+          shipped->pairs.insert({worker, recipe->hash});
+        }
       }
-      if (reply.result != status::ok) {
-        shipped_.erase({spec.worker, hash});
-        throw cosim::fmu_import_error(where + "the worker cannot load " + file.string() + ": " +
-                                      reply.message);
-      }
-    }
-    auto c = std::make_unique<remote_component>(link_, spec.worker, spec.name, hash,
-                                                std::move(description), context.log,
-                                                context.fmu_debug_logging, model_exchange);
+      return std::unique_ptr<cosim::component>(
+          std::make_unique<remote_component>(link, worker, name, recipe->hash, recipe->description,
+                                             log, debug, recipe->model_exchange));
+    };
+    std::unique_ptr<cosim::component> c = instantiate(spec.worker);
     files_[spec.name] = fs::absolute(file);
-    return c;
+    const cosim::failover_spec& failover = context.system->failover;
+    if (failover.standby.empty()) return c;
+    if (!standby_) standby_ = std::make_shared<standby_pool>(failover.standby);
+    return std::make_unique<failover_component>(
+        std::move(c), spec.worker, instantiate, standby_,
+        failover.snapshot_every.value_or(k_default_snapshot_every), context.log);
+  } catch (const cosim::fmu_import_error& e) {
+    throw cosim::fmu_import_error(where + e.what());
   } catch (const cosim::error&) {
     throw;
   } catch (const std::exception& e) {
     throw cosim::component_error(where + e.what());
   }
+}
+
+std::vector<std::pair<std::string, long>> remote_placement::events() const {
+  if (!standby_) return {};
+  return {{"failovers", standby_->failovers()}};
 }
 
 std::unique_ptr<cosim::step_group> remote_placement::create_group(

@@ -201,19 +201,23 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   // children in the documented (and XSD) order
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<simulation stop='1'/>\n</system>"),
             "t/test.xml:3: <simulation> after <component> (line 2): the children of <system> come "
-            "in the order simulation, agents, component and replicate, connection, record");
+            "in the order simulation, agents, failover, component and replicate, connection, "
+            "record");
   EXPECT_EQ(error_of("<system>\n<agents count='2'/>\n<simulation stop='1'/>\n"
                      "<component name='a' fmu='m'/>\n</system>"),
             "t/test.xml:3: <simulation> after <agents> (line 2): the children of <system> come "
-            "in the order simulation, agents, component and replicate, connection, record");
+            "in the order simulation, agents, failover, component and replicate, connection, "
+            "record");
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<record/>\n"
                      "<connection from='a.y' to='a.u'/>\n</system>"),
             "t/test.xml:4: <connection> after <record> (line 3): the children of <system> come "
-            "in the order simulation, agents, component and replicate, connection, record");
+            "in the order simulation, agents, failover, component and replicate, connection, "
+            "record");
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<connection from='a.y' to='a.u'/>\n"
                      "<component name='b' fmu='m'/>\n</system>"),
             "t/test.xml:4: <component> after <connection> (line 3): the children of <system> "
-            "come in the order simulation, agents, component and replicate, connection, record");
+            "come in the order simulation, agents, failover, component and replicate, connection, "
+            "record");
   EXPECT_EQ(error_of("<system>\n<replicate name='g' count='2'>\n<connection from='a.y' "
                      "to='a.u'/>\n<component name='a' fmu='m'/>\n</replicate>\n</system>"),
             "t/test.xml:4: <component> after <connection> (line 3): the children of <replicate> "
@@ -239,7 +243,7 @@ TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
   }
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m'/>\n<wire/>\n</system>"),
             "t/test.xml:3: unknown element <wire> (expected simulation, component, connection, "
-            "replicate, record or agents)");
+            "replicate, record, agents or failover)");
   EXPECT_EQ(error_of("<system>\n<simulation step='0.0000000001'/>\n<component name='a' fmu='m'/>"
                      "</system>"),
             "t/test.xml:2: step: '0.0000000001' is not a whole number of nanoseconds");
@@ -347,6 +351,47 @@ TEST(cosim_system_xml, agents_are_read_written_and_checked) {
             "t/test.xml:2: more than one <agents>");
   EXPECT_EQ(error_of("<system>\n<agents/><component name='a' fmu='m'/></system>"),
             "t/test.xml:2: <agents> needs a count attribute");
+}
+
+TEST(cosim_system_xml, failover_is_read_written_and_checked) {
+  const system_structure s = parse(
+      "<system>\n<agents count='2'/>\n<failover standby='s1  s2' snapshot-every='25'/>"
+      "<component name='a' fmu='m' worker='w1'/></system>");
+  EXPECT_EQ(s.failover.standby, (std::vector<std::string>{"s1", "s2"}));
+  EXPECT_EQ(s.failover.snapshot_every, 25);
+  EXPECT_EQ(s.failover.where.str(), "t/test.xml:3");
+  const system_structure back = parse(to_xml(s, false));
+  EXPECT_EQ(back.failover.standby, s.failover.standby);
+  EXPECT_EQ(back.failover.snapshot_every, 25);
+  const system_structure plain = parse(
+      "<system><failover standby='s1'/>"
+      "<component name='a' fmu='m'/></system>");
+  EXPECT_FALSE(plain.failover.snapshot_every.has_value());
+  EXPECT_EQ(to_xml(plain, false).find("snapshot-every"), std::string::npos);
+  EXPECT_EQ(
+      to_xml(parse("<system><component name='a' fmu='m'/></system>"), false).find("<failover"),
+      std::string::npos);
+  auto error_of = [](const std::string& xml) {
+    try {
+      parse(xml);
+    } catch (const validation_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of("<system>\n<failover standby=' '/><component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: standby=\"\" names no worker");
+  EXPECT_EQ(error_of("<system>\n<failover/><component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: <failover> needs a standby attribute");
+  EXPECT_EQ(error_of("<system>\n<failover standby='s1' snapshot-every='0'/>"
+                     "<component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: snapshot-every=\"0\" is not a positive integer");
+  EXPECT_EQ(error_of("<system><failover standby='s1'/>\n<failover standby='s2'/>"
+                     "<component name='a' fmu='m'/></system>"),
+            "t/test.xml:2: more than one <failover>");
+  EXPECT_THAT(error_of("<system>\n<failover standby='s1' every='3'/>"
+                       "<component name='a' fmu='m'/></system>"),
+              ::testing::StartsWith("t/test.xml:2: unknown attribute 'every' on <failover>"));
 }
 
 TEST(cosim_system_builder, builds_the_chain_with_groups_parameters_and_decimation) {

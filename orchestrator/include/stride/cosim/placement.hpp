@@ -7,6 +7,8 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "stride/cosim/component.hpp"
@@ -42,6 +44,9 @@ class placement_resolver {
   virtual std::unique_ptr<step_group> create_group(const std::vector<component*>& /*members*/) {
     return nullptr;
   }
+  /// What happened to its components during the run, counted, for the run's manifest (e.g.
+  /// "failovers"); empty when nothing is counted.
+  virtual std::vector<std::pair<std::string, long>> events() const { return {}; }
 };
 
 /// Components made by a function (tests; tools that prepare their components themselves): it

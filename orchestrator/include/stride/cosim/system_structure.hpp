@@ -104,6 +104,13 @@ struct agents_spec {
   source_location where;
 };
 
+/// Standby workers that take over the components of a lost worker (docs/failover.md).
+struct failover_spec {
+  std::vector<std::string> standby;   ///< in the order they are taken; empty: no failover
+  std::optional<int> snapshot_every;  ///< steps between state images; nullopt: the default
+  source_location where;
+};
+
 /// `count` copies of a group of components with their internal connections. Copy k of member
 /// "gait" is the component "gait[k]" (k = 1..count); inside the group a member's name means the
 /// member of the same copy, other names mean components outside the group. Outside the group,
@@ -146,6 +153,7 @@ struct system_structure {
   std::vector<replica_group> groups;  ///< expanded by expand_replicas()
   record_spec record;
   agents_spec agents;
+  failover_spec failover;
   /// The folder an archive (.ssp) was extracted into, when the system came from one: its FMU
   /// paths point there, so it lives as long as any copy of the structure.
   std::shared_ptr<const temp_dir> extracted;

@@ -5,8 +5,11 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "stride/cosim/placement.hpp"
 #include "stride/remote/settings.hpp"
@@ -14,6 +17,11 @@
 namespace stride::remote {
 
 class client;
+class standby_pool;
+
+/// State images per step of a component with standby workers, when the system sets no
+/// snapshot-every (BENCHMARKS.md: what an image costs the walk).
+inline constexpr int k_default_snapshot_every = 100;
 
 class remote_placement final : public cosim::placement_resolver {
  public:
@@ -21,23 +29,31 @@ class remote_placement final : public cosim::placement_resolver {
   ~remote_placement() override;
 
   /// The proxy of a component with a worker, nullptr for one without. Joins the domain on first
-  /// use. \throws cosim::fmu_import_error for an FMU that cannot be read or that the worker
-  /// rejects, cosim::component_error for a worker that cannot be reached; both name the
-  /// component, its file and line, and the worker.
+  /// use. With standby workers (the system's <failover>) the proxy fails over to one of them when
+  /// its worker is lost (docs/failover.md). \throws cosim::fmu_import_error for an FMU that cannot
+  /// be read or that the worker rejects, cosim::component_error for a worker that cannot be
+  /// reached; both name the component, its file and line, and the worker.
   std::unique_ptr<cosim::component> create(const cosim::component_spec& spec,
                                            const cosim::placement_context& context) override;
   std::filesystem::path source_of(const cosim::component_spec& spec) const override;
   /// A group stepping on the members' worker, when all are proxies this placement made for one
-  /// worker; nullptr otherwise.
+  /// worker and none has standby workers; nullptr otherwise.
   std::unique_ptr<cosim::step_group> create_group(
       const std::vector<cosim::component*>& members) override;
+  /// "failovers": the workers lost and replaced so far.
+  std::vector<std::pair<std::string, long>> events() const override;
 
  private:
   dds_settings settings_;
   timeouts limits_;
   std::shared_ptr<client> link_;
-  std::map<std::string, std::filesystem::path> files_;     // component name → FMU file
-  std::set<std::pair<std::string, std::string>> shipped_;  // (worker, content hash)
+  std::map<std::string, std::filesystem::path> files_;  // component name → FMU file
+  struct shipped_archives {
+    std::mutex mutex;
+    std::set<std::pair<std::string, std::string>> pairs;  // (worker, content hash)
+  };
+  std::shared_ptr<shipped_archives> shipped_ = std::make_shared<shipped_archives>();
+  std::shared_ptr<standby_pool> standby_;
 };
 
 }  // namespace stride::remote

@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# What failover costs (docs/failover.md), on the 60 s walk with the robot on a worker
+# (models/distributed/walk-robot-on-worker.xml), each measurement REPEAT times (default 5,
+# alternating so that machine load hits all alike); prints medians and ranges.
+#  1. State images: wall time without standby workers against `--standby s1 --snapshot-every N`
+#     for N in INTERVALS (default "10 50 100 500"); the ratio per round, then its median.
+#  2. Failover time: a run with `--standby s1`, its worker w1 killed (SIGKILL) after KILL_AFTER
+#     seconds of walking (default 0.5); the time from the kill to the log line that says the
+#     robot continues on s1, which is written just before the first step there. It holds the
+#     lapse of w1's DDS liveliness (1 s lease), loading the robot on s1 and the replay.
+# usage: bench/remote/failover.sh [REPEAT] [BUILD_DIR] [DOMAIN] (defaults 5, build/, 153)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+repeat="${1:-5}"
+build="${2:-$root/build}"
+domain="${3:-153}"
+intervals="${INTERVALS:-10 50 100 500}"
+kill_after="${KILL_AFTER:-0.5}"
+stride="$build/bin/stride"
+walk="$root/models/distributed/walk-robot-on-worker.xml"
+[ -x "$stride" ] || { echo "failover: $stride not found (build first)" >&2; exit 1; }
+out="$(mktemp -d)"
+declare -A pids=()
+trap 'for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null; done; wait; rm -rf "$out"' EXIT
+
+start_worker() {  # NAME: starts it and waits until it is ready
+  "$stride" worker --name "$1" --domain "$domain" > "$out/$1.log" 2>&1 &
+  pids[$1]=$!
+  for _ in $(seq 100); do grep -q ready "$out/$1.log" && return; sleep 0.1; done
+  cat "$out/$1.log" >&2
+  exit 1
+}
+start_worker w1
+start_worker s1
+
+timed() {  # LABEL ARGS...: appends "LABEL seconds" to times.txt
+  local label="$1"
+  shift
+  local start=$EPOCHREALTIME
+  "$stride" run "$walk" --quiet --domain "$domain" --output "$out/run" "$@" > "$out/last.txt" 2>&1 ||
+    { cat "$out/last.txt" >&2; echo "failover: a run failed" >&2; exit 1; }
+  local end=$EPOCHREALTIME
+  rm -rf "$out/run"
+  echo "$label $(python3 -c "print($end - $start)")" >> "$out/times.txt"
+}
+
+for ((i = 1; i <= repeat; ++i)); do
+  timed plain
+  for n in $intervals; do timed "every-$n" --standby s1 --snapshot-every "$n"; done
+  echo "round $i of $repeat (images) done" >&2
+done
+
+for ((i = 1; i <= repeat; ++i)); do
+  "$stride" run "$walk" --domain "$domain" --output "$out/run" --standby s1 > "$out/run.log" 2>&1 &
+  run=$!
+  sleep "$kill_after"
+  killed=$EPOCHREALTIME
+  kill -KILL "${pids[w1]}"
+  wait "${pids[w1]}" 2>/dev/null || true
+  until grep -q "continues on standby worker 's1'" "$out/run.log"; do
+    kill -0 "$run" 2>/dev/null || { cat "$out/run.log" >&2; echo "failover: no failover" >&2; exit 1; }
+    sleep 0.001
+  done
+  took=$EPOCHREALTIME
+  wait "$run" || { cat "$out/run.log" >&2; echo "failover: the run failed" >&2; exit 1; }
+  replay=$(grep -o "steps replayed in [0-9]* ms" "$out/run.log" | grep -o "[0-9]* ms" | cut -d' ' -f1)
+  echo "failover $(python3 -c "print($took - $killed)") $replay" >> "$out/times.txt"
+  rm -rf "$out/run"
+  # s1 now holds the run's instance no longer; w1 comes back for the next round
+  start_worker w1
+  echo "round $i of $repeat (failover) done" >&2
+done
+
+python3 - "$out/times.txt" "$intervals" <<'PY'
+import collections, statistics, sys
+t = collections.defaultdict(list)
+replays = []
+for line in open(sys.argv[1]):
+    label, seconds, *rest = line.split()
+    t[label].append(float(seconds))
+    if rest:
+        replays.append(float(rest[0]))
+med = statistics.median
+plain = t["plain"]
+print(f"60 s walk, robot on a worker, no standby: median {med(plain):.2f} s "
+      f"(min {min(plain):.2f}, max {max(plain):.2f}, n={len(plain)})")
+for n in sys.argv[2].split():
+    s = t[f"every-{n}"]
+    r = [b / a for a, b in zip(plain, s)]
+    print(f"  --snapshot-every {n}: median {med(s):.2f} s (min {min(s):.2f}, max {max(s):.2f}); "
+          f"/ no standby: median x{med(r):.3f} (min x{min(r):.3f}, max x{max(r):.3f})")
+f = t["failover"]
+print(f"failover, kill to the first step on the standby: median {med(f) * 1e3:.0f} ms "
+      f"(min {min(f) * 1e3:.0f}, max {max(f) * 1e3:.0f}, n={len(f)}); of it the load and "
+      f"replay on the standby: median {med(replays):.0f} ms (min {min(replays):.0f}, "
+      f"max {max(replays):.0f})")
+PY
