@@ -35,6 +35,32 @@ failover_component::failover_component(std::unique_ptr<cosim::component> first, 
       snapshot_every_(std::max(snapshot_every, 1)),
       log_(log ? std::move(log) : cosim::stderr_log_sink()) {}
 
+std::unique_ptr<failover_component> failover_component::start(const std::string& worker,
+                                                              factory make,
+                                                              std::shared_ptr<standby_pool> standby,
+                                                              int snapshot_every,
+                                                              cosim::log_sink log) {
+  std::string on = worker;
+  for (;;) {
+    try {
+      std::unique_ptr<cosim::component> first = make(on);
+      if (on != worker && log) {
+        log(cosim::log_level::warning, first->name(), "failover",
+            "worker '" + worker + "' was lost before the run: starts on standby worker '" + on +
+                "'");
+      }
+      return std::make_unique<failover_component>(std::move(first), on, std::move(make),
+                                                  std::move(standby), snapshot_every,
+                                                  std::move(log));
+    } catch (const worker_lost& lost) {
+      const std::optional<std::string> next = standby->replacement_for(on);
+      if (!next)
+        throw cosim::component_error(std::string(lost.what()) + "; no standby worker is left");
+      on = *next;
+    }
+  }
+}
+
 template <class F>
 auto failover_component::guarded(F&& f) -> decltype(f(std::declval<cosim::component&>())) {
   for (;;) {

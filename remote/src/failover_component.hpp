@@ -47,6 +47,12 @@ class failover_component final : public cosim::component {
   /// Its calls throw worker_lost when the worker is gone.
   using factory = std::function<std::unique_ptr<cosim::component>(const std::string& worker)>;
 
+  /// Instantiates the component on `worker` or, should that worker be lost meanwhile, on the next
+  /// standby. \throws cosim::component_error when no standby is left.
+  static std::unique_ptr<failover_component> start(const std::string& worker, factory make,
+                                                   std::shared_ptr<standby_pool> standby,
+                                                   int snapshot_every, cosim::log_sink log);
+
   /// `first` runs on `worker`; `snapshot_every` > 0: a state image after every that many steps.
   failover_component(std::unique_ptr<cosim::component> first, std::string worker, factory make,
                      std::shared_ptr<standby_pool> standby, int snapshot_every,

@@ -121,14 +121,20 @@ std::unique_ptr<cosim::component> remote_placement::create(
           std::make_unique<remote_component>(link, worker, name, recipe->hash, recipe->description,
                                              log, debug, recipe->model_exchange));
     };
-    std::unique_ptr<cosim::component> c = instantiate(spec.worker);
-    files_[spec.name] = fs::absolute(file);
+    std::unique_ptr<cosim::component> c;
     const cosim::failover_spec& failover = context.system->failover;
-    if (failover.standby.empty()) return c;
-    if (!standby_) standby_ = std::make_shared<standby_pool>(failover.standby);
-    return std::make_unique<failover_component>(
-        std::move(c), spec.worker, instantiate, standby_,
-        failover.snapshot_every.value_or(k_default_snapshot_every), context.log);
+    if (failover.standby.empty()) {
+      c = instantiate(spec.worker);
+    } else {
+      if (!standby_) standby_ = std::make_shared<standby_pool>(failover.standby);
+      c = failover_component::start(spec.worker, instantiate, standby_,
+                                    failover.snapshot_every.value_or(k_default_snapshot_every),
+                                    context.log);
+    }
+    files_[spec.name] = fs::absolute(file);
+    return c;
+  } catch (const worker_lost& e) {
+    throw cosim::component_error(where + e.what());
   } catch (const cosim::fmu_import_error& e) {
     throw cosim::fmu_import_error(where + e.what());
   } catch (const cosim::error&) {

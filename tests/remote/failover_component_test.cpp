@@ -261,6 +261,31 @@ TEST_F(failover, the_orchestrators_own_restore_is_where_a_replay_starts) {
   EXPECT_THAT(log.all(), HasSubstr("from its last state image, 0 steps replayed"));
 }
 
+TEST_F(failover, a_worker_lost_before_the_run_is_replaced_at_once) {
+  cluster.dead.insert("w1");
+  auto factory = [this](const std::string& worker) -> std::unique_ptr<cosim::component> {
+    cluster.check(worker);
+    return std::make_unique<accumulator>(cluster, worker);
+  };
+  auto c = failover_component::start("w1", factory,
+                                     std::make_shared<standby_pool>(std::vector<std::string>{"s1"}),
+                                     10, log.sink());
+  EXPECT_EQ(c->worker(), "s1");
+  EXPECT_THAT(log.all(), HasSubstr("acc [failover] worker 'w1' was lost before the run: starts "
+                                   "on standby worker 's1'"));
+  EXPECT_EQ(run(*c, 20), undisturbed(20));
+  cluster.dead.insert("s1");
+  try {
+    failover_component::start(
+        "s1", factory, std::make_shared<standby_pool>(std::vector<std::string>{}), 10, log.sink());
+    FAIL() << "no standby";
+  } catch (const worker_lost&) {
+    FAIL() << "a run that cannot start is no loss to take over";
+  } catch (const cosim::component_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("worker 's1' is gone; no standby worker is left"));
+  }
+}
+
 TEST(standby_pool, the_components_of_one_lost_worker_move_to_one_standby) {
   standby_pool pool({"s1", "s2"});
   EXPECT_EQ(pool.replacement_for("w1"), "s1");
