@@ -181,6 +181,50 @@ TEST_F(failover_run, bad_failover_settings_are_refused_with_the_reason) {
   EXPECT_THAT(empty.err, AllOf(HasSubstr("empty-standby.xml:7"), HasSubstr("names no worker")));
 }
 
+// the shipped loopback configuration with Cyclone DDS dropping `per_mille` of the packets each
+// process sends (its test option Internal/Test/XmitLossiness)
+fs::path lossy_config(const fs::path& dir, int per_mille) {
+  std::string xml = read_file(k_source / "remote/config/loopback.xml");
+  const auto at = xml.find("</Discovery>");
+  if (at == std::string::npos) return {};
+  xml.insert(at + 12, "\n    <Internal><Test><XmitLossiness>" + std::to_string(per_mille) +
+                          "</XmitLossiness></Test></Internal>");
+  const fs::path file = dir / ("lossy-" + std::to_string(per_mille) + ".xml");
+  std::ofstream(file) << xml;
+  return file;
+}
+
+TEST_F(failover_run, packets_lost_on_the_way_change_nothing) {
+  const fs::path lossy = lossy_config(scratch.path(), 50);  // 5 %
+  ASSERT_FALSE(lossy.empty());
+  auto w1 =
+      worker_process(k_cli, "w1", 153, scratch.path() / "w1.log", {"--dds-config", lossy.string()});
+  ASSERT_TRUE(w1.ready()) << w1.output();
+  const auto local =
+      run_command("'" + k_cli + "' run " + quoted(k_source / "models/walk.xml") +
+                      " --quiet --stop-time 2 --output " + quoted(scratch.path() / "local"),
+                  scratch.path());
+  ASSERT_EQ(local.exit_code, 0) << local.err;
+  const auto remote =
+      run_command("'" + k_cli + "' run " + quoted(k_walk_on_worker) +
+                      " --stop-time 2 --domain 153 --standby s1 --dds-config " + quoted(lossy) +
+                      " --output " + quoted(scratch.path() / "remote"),
+                  scratch.path());
+  ASSERT_EQ(remote.exit_code, 0) << remote.err;
+  EXPECT_THAT(remote.err, ::testing::Not(HasSubstr("is lost")));  // reliable delivery, no failover
+  EXPECT_EQ(read_file(scratch.path() / "remote/results.csv"),
+            read_file(scratch.path() / "local/results.csv"));
+  // the control: with every packet dropped the worker is never reached, so the option works
+  const fs::path dead = lossy_config(scratch.path(), 1000);
+  const auto cut_off = run_command("'" + k_cli + "' run " + quoted(k_walk_on_worker) +
+                                       " --stop-time 2 --domain 153 --worker-timeout 1 "
+                                       "--dds-config " +
+                                       quoted(dead) + " --output " + quoted(scratch.path() / "cut"),
+                                   scratch.path());
+  EXPECT_NE(cut_off.exit_code, 0);
+  EXPECT_THAT(cut_off.err, HasSubstr("worker 'w1' did not appear"));
+}
+
 TEST_F(failover_run, an_fmu_that_cannot_save_its_state_is_refused_before_the_run) {
   cosim::test::write_fake_fmu(scratch.path() / "fake.fmu", {{"y", "output", "Real", ""}});
   const fs::path system = scratch.path() / "fake.xml";

@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# Failover over a real network: three network namespaces on one bridge, "hosts" a (worker w1),
+# c (standby s1) and b (the orchestrator), all with the multi-host DDS configuration of docs/dds/
+# (unicast discovery, lease 1 s). The walk runs with the robot on w1 and --standby s1.
+#   partition: w1's link is cut for 0.5 s (shorter than the lease): nothing changes, the run does
+#              not fail over; then for 3 s: the robot fails over to s1. Both CSVs equal the
+#              in-process walk byte for byte, and w1, back on the network, serves the next run.
+#   lossy:     every link with netem (2 ms ± 1 ms delay, 5 % loss, 1 % duplicates, reordering):
+#              the CSV equals the in-process walk. Needs the kernel's netem qdisc.
+# Needs root (CAP_NET_ADMIN): otherwise it is skipped (exit 77) with the reason.
+# usage: netns_failover_test.sh STRIDE_CLI SOURCE_DIR partition|lossy
+set -u
+cli="$1"
+src="$2"
+mode="$3"
+skip() {
+  echo "SKIPPED: $*"
+  exit 77
+}
+fail() {
+  echo "FAILED: $*"
+  exit 1
+}
+[ "$(id -u)" -eq 0 ] || skip "needs root to create network namespaces (running as uid $(id -u))"
+command -v ip > /dev/null || skip "the ip tool (iproute2) is not installed"
+
+tag="f$$"
+sw="stride-sw-$tag"
+work="$(mktemp -d)"
+pids=()
+cleanup() {
+  for p in "${pids[@]}"; do kill -TERM "$p" 2> /dev/null; done
+  wait 2> /dev/null
+  for h in a b c; do ip netns del "stride-$h-$tag" 2> /dev/null; done
+  ip netns del "$sw" 2> /dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+ip netns add "$sw" 2> "$work/err" || skip "cannot create a network namespace: $(cat "$work/err")"
+ip -n "$sw" link add br0 type bridge || skip "cannot create a bridge"
+ip -n "$sw" link set br0 up
+declare -A addr=([a]=10.214.0.1 [b]=10.214.0.2 [c]=10.214.0.3)
+for h in a b c; do
+  ns="stride-$h-$tag"
+  ip netns add "$ns" || exit 1
+  ip link add "v$h$tag" type veth peer name "s$h$tag" || skip "cannot create a veth pair"
+  ip link set "v$h$tag" netns "$ns" && ip link set "s$h$tag" netns "$sw" || exit 1
+  ip -n "$sw" link set "s$h$tag" master br0 && ip -n "$sw" link set "s$h$tag" up || exit 1
+  ip -n "$ns" addr add "${addr[$h]}/24" dev "v$h$tag" || exit 1
+  ip -n "$ns" link set lo up && ip -n "$ns" link set "v$h$tag" up || exit 1
+done
+# the shipped multi-host configuration with every host as a peer
+peers="<Peer address=\"${addr[a]}\"/><Peer address=\"${addr[b]}\"/><Peer address=\"${addr[c]}\"/>"
+sed -e "s|<Peer address=\"\${PEER_ADDR}\"/>|$peers|" "$src/docs/dds/multi-host.xml" > "$work/dds.xml"
+grep -q "${addr[c]}" "$work/dds.xml" || fail "could not list the peers in the DDS configuration"
+
+on() {  # HOST COMMAND...: runs it in that host's namespace with its interface
+  local h="$1"
+  shift
+  ip netns exec "stride-$h-$tag" env MY_IFACE="v$h$tag" "$@"
+}
+start_worker() {  # HOST NAME: a worker, waited for until it is ready
+  on "$1" "$cli" worker --name "$2" --domain 6 --dds-config "$work/dds.xml" --insecure \
+    > "$work/$2.log" 2>&1 &
+  pids+=($!)
+  for _ in $(seq 100); do
+    grep -q "ready" "$work/$2.log" && return
+    sleep 0.1
+  done
+  cat "$work/$2.log"
+  fail "worker $2 not ready"
+}
+start_run() {  # NAME ARGS...: the walk with the robot on w1, in the background (pid in run_pid)
+  local name="$1"
+  shift
+  on b "$cli" run "$src/models/distributed/walk-robot-on-worker.xml" --domain 6 \
+    --dds-config "$work/dds.xml" --output "$work/$name" "$@" > "$work/$name.log" 2>&1 &
+  run_pid=$!
+}
+wait_results() {  # NAME BYTES: until the run's results hold BYTES
+  for _ in $(seq 30000); do
+    [ "$(stat -c %s "$work/$1/results.csv" 2> /dev/null || echo 0)" -ge "$2" ] && return
+    kill -0 "$run_pid" 2> /dev/null || { cat "$work/$1.log"; fail "$1 ended early"; }
+    sleep 0.002
+  done
+  fail "$1: no results"
+}
+cut() {  # SECONDS: host a's port of the bridge forwards nothing for that long. Its link stays
+  # up, as when a switch in between stalls: a link going down would also flush the hosts' ARP
+  # entries, which then take up to a second more to come back after the link.
+  bridge -n "$sw" link set dev "sa$tag" state 0 || fail "cannot disable the bridge port"
+  sleep "$1"
+  bridge -n "$sw" link set dev "sa$tag" state 3 || fail "cannot enable the bridge port"
+}
+finish_run() {  # NAME: waits for it; it must succeed and equal the in-process walk
+  wait "$run_pid" || { cat "$work/$1.log"; fail "$1 failed"; }
+  cmp -s "$work/local/results.csv" "$work/$1/results.csv" || fail "$1: results differ"
+}
+
+"$cli" run "$src/models/walk.xml" --quiet --output "$work/local" || fail "in-process walk"
+fifth=$(($(stat -c %s "$work/local/results.csv") / 5))
+
+case "$mode" in
+  partition)
+    start_worker a w1
+    start_worker c s1
+    # a cut shorter than the lease: the run waits and goes on where it was
+    start_run short --standby s1
+    wait_results short "$fifth"
+    cut 0.5
+    finish_run short
+    grep -q "is lost" "$work/short.log" && { cat "$work/short.log"; fail "a 0.5 s cut failed over"; }
+    # a cut longer than the lease: the robot fails over to s1
+    start_run long --standby s1
+    wait_results long "$fifth"
+    cut 3
+    finish_run long
+    grep -q "worker 'w1' is lost after t = .* continues on standby worker 's1'" "$work/long.log" ||
+      { cat "$work/long.log"; fail "no failover line"; }
+    grep -q '"failovers": 1' "$work/long/manifest.json" || fail "the manifest does not count it"
+    # w1, back on the network, is not held by the old run and serves the next one
+    start_run next --quiet
+    finish_run next
+    echo "PASSED: a 0.5 s cut changes nothing, a 3 s cut fails over to the standby; every CSV equals the in-process walk; the worker that came back serves the next run"
+    ;;
+  lossy)
+    for h in a b; do
+      on "$h" tc qdisc add dev "v$h$tag" root netem delay 2ms 1ms loss 5% duplicate 1% \
+        reorder 25% 50% 2> "$work/tc.err" ||
+        skip "no netem on this kernel (tc: $(head -c 200 "$work/tc.err"))"
+    done
+    "$cli" run "$src/models/walk.xml" --quiet --stop-time 10 --output "$work/local" --force ||
+      fail "in-process walk"
+    start_worker a w1
+    start_run lossy --quiet --stop-time 10
+    finish_run lossy
+    echo "PASSED: over links with 2 ms ± 1 ms delay, 5 % loss, 1 % duplicates and reordering the CSV equals the in-process walk"
+    ;;
+  *) fail "mode is partition or lossy, not '$mode'" ;;
+esac
