@@ -10,6 +10,9 @@
 #     log line that says the robot continues on s1, which is written just before the first step
 #     there. It holds the lapse of w1's DDS liveliness (1 s lease), loading the robot on s1 (the
 #     archive is shipped in the first round only) and the replay.
+#  3. Packets lost: the first 4 s of the walk with the worker and the run dropping 5 % of the
+#     packets they send (Cyclone DDS's test option Internal/Test/XmitLossiness = 50), against no
+#     loss; every lost packet waits for DDS's reliable repair (heartbeat, acknack, resend).
 # usage: bench/remote/failover.sh [REPEAT] [BUILD_DIR] [DOMAIN] (defaults 5, build/, 153)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -25,8 +28,8 @@ out="$(mktemp -d)"
 declare -A pids=()
 trap 'for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null; done; wait; rm -rf "$out"' EXIT
 
-start_worker() {  # NAME: starts it and waits until it is ready
-  "$stride" worker --name "$1" --domain "$domain" > "$out/$1.log" 2>&1 &
+start_worker() {  # NAME [ARGS...]: starts it and waits until it is ready
+  "$stride" worker --name "$1" --domain "$domain" "${@:2}" > "$out/$1.log" 2>&1 &
   pids[$1]=$!
   for _ in $(seq 100); do grep -q ready "$out/$1.log" && return; sleep 0.1; done
   cat "$out/$1.log" >&2
@@ -76,6 +79,18 @@ for ((i = 1; i <= repeat; ++i)); do
   echo "round $i of $repeat (failover) done" >&2
 done
 
+sed 's|</Discovery>|</Discovery><Internal><Test><XmitLossiness>50</XmitLossiness></Test></Internal>|' \
+  "$root/remote/config/loopback.xml" > "$out/lossy.xml"
+kill -TERM "${pids[w1]}" && wait "${pids[w1]}" 2>/dev/null || true
+start_worker w1 --dds-config "$out/lossy.xml"
+for ((i = 1; i <= repeat; ++i)); do
+  timed lossy --stop-time 4 --dds-config "$out/lossy.xml"
+  echo "round $i of $repeat (lossy) done" >&2
+done
+kill -TERM "${pids[w1]}" && wait "${pids[w1]}" 2>/dev/null || true
+start_worker w1
+for ((i = 1; i <= repeat; ++i)); do timed clean --stop-time 4; done
+
 python3 - "$out/times.txt" "$intervals" <<'PY'
 import collections, statistics, sys
 t = collections.defaultdict(list)
@@ -99,4 +114,8 @@ print(f"failover, kill to the first step on the standby: median {med(f) * 1e3:.0
       f"(min {min(f) * 1e3:.0f}, max {max(f) * 1e3:.0f}, n={len(f)}); of it the load and "
       f"replay on the standby: median {med(replays):.0f} ms (min {min(replays):.0f}, "
       f"max {max(replays):.0f})")
+for label, what in (("clean", "no loss"), ("lossy", "5 % of packets dropped")):
+    s = t[label]
+    print(f"4 s of the walk, robot on a worker, {what}: median {med(s):.2f} s "
+          f"(min {min(s):.2f}, max {max(s):.2f})")
 PY

@@ -2,6 +2,8 @@
 
 #include <fstream>
 #include <iterator>
+#include <mutex>
+#include <set>
 
 #include "client.hpp"
 #include "failover_component.hpp"
@@ -69,8 +71,49 @@ void ship(client& link, const std::string& worker, const std::string& component,
 
 }  // namespace
 
+// what it takes to instantiate a component on any worker (a standby's too)
+struct instance_recipe {
+  std::filesystem::path file;
+  std::vector<std::byte> archive;
+  std::string hash;
+  cosim::model_description description;
+  std::optional<cosim::model_exchange_options> model_exchange;
+};
+
+// the archives each worker holds, as (worker, content hash)
+struct shipped_archives {
+  std::mutex mutex;
+  std::set<std::pair<std::string, std::string>> pairs;
+};
+
+namespace {
+
+// Instances of the recipe on any worker, the archive shipped first where needed. Also called
+// during the run, on the thread of a component that fails over: it holds only what outlives the
+// placement.
+failover_component::factory instance_factory(std::shared_ptr<client> link,
+                                             std::shared_ptr<shipped_archives> shipped,
+                                             std::shared_ptr<const instance_recipe> recipe,
+                                             std::string name, cosim::log_sink log, bool debug) {
+  return [=](const std::string& worker) -> std::unique_ptr<cosim::component> {
+    {
+      std::lock_guard lock(shipped->mutex);
+      if (!shipped->pairs.contains({worker, recipe->hash})) {
+        ship(*link, worker, name, recipe->hash, recipe->archive, recipe->file);
+        shipped->pairs.insert({worker, recipe->hash});
+      }
+    }
+    return std::make_unique<remote_component>(link, worker, name, recipe->hash, recipe->description,
+                                              log, debug, recipe->model_exchange);
+  };
+}
+
+}  // namespace
+
 remote_placement::remote_placement(dds_settings settings, timeouts limits)
-    : settings_(std::move(settings)), limits_(limits) {}
+    : settings_(std::move(settings)),
+      limits_(limits),
+      shipped_(std::make_shared<shipped_archives>()) {}
 
 remote_placement::~remote_placement() = default;
 
@@ -80,14 +123,8 @@ std::unique_ptr<cosim::component> remote_placement::create(
   const std::string where = (spec.where.str().empty() ? std::string() : spec.where.str() + ": ") +
                             "component '" + spec.name + "' on worker '" + spec.worker + "': ";
   const fs::path file = cosim::resolve_fmu(spec, *context.system, context.fmu_search_path);
-  // what it takes to instantiate the component on any worker (a standby's too)
-  struct instance_recipe {
-    std::vector<std::byte> archive;
-    std::string hash;
-    cosim::model_description description;
-    std::optional<cosim::model_exchange_options> model_exchange;
-  };
   auto recipe = std::make_shared<instance_recipe>();
+  recipe->file = file;
   try {
     recipe->archive = read_bytes(file, context.import.limits.max_total_size);
     recipe->hash = content_hash(recipe->archive);
@@ -105,22 +142,8 @@ std::unique_ptr<cosim::component> remote_placement::create(
   }
   try {
     if (!link_) link_ = std::make_shared<client>(settings_, limits_);
-    // also called during the run, on the thread of a component that fails over: it holds only
-    // what outlives this placement
-    auto instantiate = [link = link_, shipped = shipped_, recipe, file, name = spec.name,
-                        log = context.log,
-                        debug = context.fmu_debug_logging](const std::string& worker) {
-      {
-        std::lock_guard lock(shipped->mutex);
-        if (!shipped->pairs.contains({worker, recipe->hash})) {
-          ship(*link, worker, name, recipe->hash, recipe->archive, file);
-          shipped->pairs.insert({worker, recipe->hash});
-        }
-      }
-      return std::unique_ptr<cosim::component>(
-          std::make_unique<remote_component>(link, worker, name, recipe->hash, recipe->description,
-                                             log, debug, recipe->model_exchange));
-    };
+    const failover_component::factory instantiate = instance_factory(
+        link_, shipped_, recipe, spec.name, context.log, context.fmu_debug_logging);
     std::unique_ptr<cosim::component> c;
     const cosim::failover_spec& failover = context.system->failover;
     if (failover.standby.empty()) {

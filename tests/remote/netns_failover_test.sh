@@ -27,9 +27,11 @@ command -v ip > /dev/null || skip "the ip tool (iproute2) is not installed"
 tag="f$$"
 sw="stride-sw-$tag"
 work="$(mktemp -d)"
-pids=()
 cleanup() {
-  for p in "${pids[@]}"; do kill -TERM "$p" 2> /dev/null; done
+  # `ip netns exec` forks: the processes inside are found by namespace, not by $!
+  for h in a b c; do ip netns pids "stride-$h-$tag" 2> /dev/null | xargs -r kill -TERM; done
+  sleep 0.5
+  for h in a b c; do ip netns pids "stride-$h-$tag" 2> /dev/null | xargs -r kill -KILL; done
   wait 2> /dev/null
   for h in a b c; do ip netns del "stride-$h-$tag" 2> /dev/null; done
   ip netns del "$sw" 2> /dev/null
@@ -63,7 +65,6 @@ on() {  # HOST COMMAND...: runs it in that host's namespace with its interface
 start_worker() {  # HOST NAME: a worker, waited for until it is ready
   on "$1" "$cli" worker --name "$2" --domain 6 --dds-config "$work/dds.xml" --insecure \
     > "$work/$2.log" 2>&1 &
-  pids+=($!)
   for _ in $(seq 100); do
     grep -q "ready" "$work/$2.log" && return
     sleep 0.1

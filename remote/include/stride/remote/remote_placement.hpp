@@ -5,7 +5,6 @@
 
 #include <map>
 #include <memory>
-#include <mutex>
 #include <set>
 #include <string>
 #include <utility>
@@ -18,6 +17,7 @@ namespace stride::remote {
 
 class client;
 class standby_pool;
+struct shipped_archives;
 
 /// State images per step of a component with standby workers, when the system sets no
 /// snapshot-every (BENCHMARKS.md: what an image costs the walk).
@@ -48,11 +48,7 @@ class remote_placement final : public cosim::placement_resolver {
   timeouts limits_;
   std::shared_ptr<client> link_;
   std::map<std::string, std::filesystem::path> files_;  // component name → FMU file
-  struct shipped_archives {
-    std::mutex mutex;
-    std::set<std::pair<std::string, std::string>> pairs;  // (worker, content hash)
-  };
-  std::shared_ptr<shipped_archives> shipped_ = std::make_shared<shipped_archives>();
+  std::shared_ptr<shipped_archives> shipped_;
   std::shared_ptr<standby_pool> standby_;
 };
 
