@@ -79,7 +79,7 @@ for ((i = 1; i <= repeat; ++i)); do
   echo "round $i of $repeat (failover) done" >&2
 done
 
-sed 's|</Discovery>|</Discovery><Internal><Test><XmitLossiness>50</XmitLossiness></Test></Internal>|' \
+sed 's|</Internal>|<Test><XmitLossiness>50</XmitLossiness></Test></Internal>|' \
   "$root/remote/config/loopback.xml" > "$out/lossy.xml"
 kill -TERM "${pids[w1]}" && wait "${pids[w1]}" 2>/dev/null || true
 start_worker w1 --dds-config "$out/lossy.xml"

@@ -185,10 +185,10 @@ TEST_F(failover_run, bad_failover_settings_are_refused_with_the_reason) {
 // process sends (its test option Internal/Test/XmitLossiness)
 fs::path lossy_config(const fs::path& dir, int per_mille) {
   std::string xml = read_file(k_source / "remote/config/loopback.xml");
-  const auto at = xml.find("</Discovery>");
+  const auto at = xml.find("</Internal>");
   if (at == std::string::npos) return {};
-  xml.insert(at + 12, "\n    <Internal><Test><XmitLossiness>" + std::to_string(per_mille) +
-                          "</XmitLossiness></Test></Internal>");
+  xml.insert(
+      at, "  <Test><XmitLossiness>" + std::to_string(per_mille) + "</XmitLossiness></Test>\n    ");
   const fs::path file = dir / ("lossy-" + std::to_string(per_mille) + ".xml");
   std::ofstream(file) << xml;
   return file;
