@@ -83,10 +83,9 @@ std::string placement_table(const system_structure& system) {
     table += (kind.empty() ? "" : "  (" + kind + ")") + "\n";
   }
   if (!system.failover.standby.empty()) {
-    std::string names;
-    for (const auto& w : system.failover.standby) names += (names.empty() ? "" : ", ") + w;
     table +=
-        "  standby workers: " + names + " (a state image every " +
+        "  standby workers: " + text::join(system.failover.standby, ", ") +
+        " (a state image every " +
         std::to_string(system.failover.snapshot_every.value_or(remote::k_default_snapshot_every)) +
         " steps)\n";
   }

@@ -53,6 +53,11 @@ void export_plan::check_osp_system() const {
                   "<agents>: several agents are a way of running the system (stride run "
                   "--agents)");
   }
+  if (!s.failover.standby.empty()) {
+    refuse_export(format_, s.failover.where,
+                  "<failover>: standby workers are a way of running the system (stride run "
+                  "--standby)");
+  }
   const record_spec& r = s.record;
   const std::string run_option =
       " (OSP says nothing of recording; give it to stride run: --record, "

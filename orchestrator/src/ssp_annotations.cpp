@@ -1,5 +1,6 @@
 // What Stride's annotations carry besides step and algorithm (docs/ssp.md, "Stride's
-// annotations"): what to record and how many agents run the system; where a component runs, its
+// annotations"): what to record, how many agents run the system and its standby workers; where a
+// component runs, its
 // step multiple, integrator and the values no SSP type holds. Their attributes are those of the
 // system XML's, so that an exported system reads back exactly as it was written.
 #include <charconv>
@@ -12,6 +13,31 @@
 namespace stride::cosim::detail::ssp {
 
 using tinyxml2::XMLElement;
+
+namespace {
+
+// the attribute `name` of `e` as an integer of at least 1
+int positive_integer(const xml_file& file, const XMLElement& e, const char* name,
+                     const std::string& text) {
+  int n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error != std::errc() || end != text.data() + text.size() || n < 1) {
+    file.fail(e, std::string(name) + "=\"" + text + "\" is not a positive integer");
+  }
+  return n;
+}
+
+// names separated by blanks; at least one
+std::vector<std::string> worker_names(const xml_file& file, const XMLElement& e, const char* name,
+                                      const std::string& text) {
+  std::vector<std::string> names;
+  std::istringstream in(text);
+  for (std::string w; in >> w;) names.push_back(w);
+  if (names.empty()) file.fail(e, std::string(name) + "=\"\" names no worker");
+  return names;
+}
+
+}  // namespace
 
 record_spec read_record_annotation(const xml_file& file, const XMLElement& e) {
   file.allow_attributes(e, {"enabled", "interval", "file"});
@@ -40,11 +66,7 @@ agents_spec read_agents_annotation(const xml_file& file, const XMLElement& e) {
   file.allow_attributes(e, {"count", "mode", "workers"});
   agents_spec a;
   a.where = file.at(e);
-  const std::string count = file.required(e, "count");
-  const auto [end, error] = std::from_chars(count.data(), count.data() + count.size(), a.count);
-  if (error != std::errc() || end != count.data() + count.size() || a.count < 1) {
-    file.fail(e, "count=\"" + count + "\" is not a positive integer");
-  }
+  a.count = positive_integer(file, e, "count", file.required(e, "count"));
   if (const auto mode = file.attribute(e, "mode")) {
     if (*mode != "synchronous" && *mode != "asynchronous") {
       file.fail(e, "mode \"" + *mode + "\" is not synchronous or asynchronous");
@@ -52,11 +74,20 @@ agents_spec read_agents_annotation(const xml_file& file, const XMLElement& e) {
     a.synchronous = *mode == "synchronous";
   }
   if (const auto workers = file.attribute(e, "workers")) {
-    std::istringstream names(*workers);
-    for (std::string name; names >> name;) a.workers.push_back(name);
-    if (a.workers.empty()) file.fail(e, "workers=\"\" names no worker");
+    a.workers = worker_names(file, e, "workers", *workers);
   }
   return a;
+}
+
+failover_spec read_failover_annotation(const xml_file& file, const XMLElement& e) {
+  file.allow_attributes(e, {"standby", "snapshot-every"});
+  failover_spec f;
+  f.where = file.at(e);
+  f.standby = worker_names(file, e, "standby", file.required(e, "standby"));
+  if (const auto every = file.attribute(e, "snapshot-every")) {
+    f.snapshot_every = positive_integer(file, e, "snapshot-every", *every);
+  }
+  return f;
 }
 
 void read_component_annotation(const xml_file& file, const XMLElement& s, element& c) {
@@ -64,10 +95,7 @@ void read_component_annotation(const xml_file& file, const XMLElement& s, elemen
       s, {"worker", "step_multiple", "solver", "method", "rtol", "atol", "max_step"});
   if (file.attribute(s, "worker")) c.worker = file.required(s, "worker");
   if (const auto m = file.attribute(s, "step_multiple")) {
-    const auto [end, error] = std::from_chars(m->data(), m->data() + m->size(), c.step_multiple);
-    if (error != std::errc() || end != m->data() + m->size() || c.step_multiple < 1) {
-      file.fail(s, "step_multiple=\"" + *m + "\" is not a positive integer");
-    }
+    c.step_multiple = positive_integer(file, s, "step_multiple", *m);
   }
   component_spec integrated;
   integrated.kind = c.kind;

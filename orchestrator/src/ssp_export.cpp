@@ -189,6 +189,7 @@ class ssd_writer {
     simulation->SetAttribute("algorithm", std::string(to_string(s.algorithm)).c_str());
     write_record(simulation, s.record);
     write_agents(simulation, s.agents);
+    write_failover(simulation, s.failover);
     if (step) {
       add_annotation(e, "com.opensimulationplatform", "osp:Algorithm")
           ->InsertNewChildElement("osp:FixedStepAlgorithm")
@@ -216,10 +217,15 @@ class ssd_writer {
     XMLElement* agents = simulation->InsertNewChildElement("stride:Agents");
     agents->SetAttribute("count", a.count);
     agents->SetAttribute("mode", a.synchronous ? "synchronous" : "asynchronous");
-    if (a.workers.empty()) return;
-    std::string workers;
-    for (const auto& w : a.workers) workers += (workers.empty() ? "" : " ") + w;
-    agents->SetAttribute("workers", workers.c_str());
+    if (!a.workers.empty()) agents->SetAttribute("workers", text::join(a.workers, " ").c_str());
+  }
+
+  // standby workers as <failover> of the system XML says them
+  static void write_failover(XMLElement* simulation, const failover_spec& f) {
+    if (f.standby.empty()) return;
+    XMLElement* failover = simulation->InsertNewChildElement("stride:Failover");
+    failover->SetAttribute("standby", text::join(f.standby, " ").c_str());
+    if (f.snapshot_every) failover->SetAttribute("snapshot-every", *f.snapshot_every);
   }
 
   const detail::export_plan& plan_;

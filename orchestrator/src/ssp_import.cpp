@@ -435,14 +435,17 @@ class ssd_reader {
       }
       content_.algorithm = *a == "jacobi" ? algorithm_kind::jacobi : algorithm_kind::gauss_seidel;
     }
-    file_.children(s, {{k_stride_ns, "Record", 0}, {k_stride_ns, "Agents", 1}},
-                   [&](const XMLElement& x, std::string_view local) {
-                     if (local == "Record") {
-                       content_.record = read_record_annotation(file_, x);
-                     } else {
-                       content_.agents = read_agents_annotation(file_, x);
-                     }
-                   });
+    file_.children(
+        s, {{k_stride_ns, "Record", 0}, {k_stride_ns, "Agents", 1}, {k_stride_ns, "Failover", 2}},
+        [&](const XMLElement& x, std::string_view local) {
+          if (local == "Record") {
+            content_.record = read_record_annotation(file_, x);
+          } else if (local == "Agents") {
+            content_.agents = read_agents_annotation(file_, x);
+          } else {
+            content_.failover = read_failover_annotation(file_, x);
+          }
+        });
   }
 
   // a unit a connector declares must be one of the SSD's
@@ -483,6 +486,7 @@ system_structure import_ssd(const fs::path& ssd, const std::string& shown, const
   s.notes.ignored_annotations = content.ignored_annotations;
   if (content.record) s.record = *content.record;
   s.agents = content.agents;
+  s.failover = content.failover;
   ssp::flatten(content, s, sink_or_stderr(log));
   if (s.components.empty()) {
     throw validation_error(content.top.origin + "the system has no component (an FMU)");

@@ -154,6 +154,7 @@ struct ssd_content {
   std::optional<algorithm_kind> algorithm;
   std::optional<record_spec> record;  ///< Stride's system annotation; nullopt: the default
   agents_spec agents;                 ///< Stride's system annotation; count 0: one run
+  failover_spec failover;             ///< Stride's system annotation; no standby: none
   std::string description;
   std::optional<source_location> stride_annotation;  ///< where Stride's system annotation is
   std::vector<tool_stepping> tool_steppings;         ///< other tools' step and algorithm
@@ -168,6 +169,8 @@ void take_stepping(const ssd_content& content, system_structure& s);
 record_spec read_record_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
 /// Stride's <Agents> (in its system annotation): <agents> of the system XML.
 agents_spec read_agents_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
+/// Stride's <Failover> (in its system annotation): <failover> of the system XML.
+failover_spec read_failover_annotation(const xml_file& file, const tinyxml2::XMLElement& e);
 
 /// Stride's component annotation (its stride:Component `s`) into the component `c`: worker,
 /// step multiple, integrator and stride:Value values.

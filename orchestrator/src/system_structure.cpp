@@ -530,17 +530,12 @@ std::string to_xml(const system_structure& s, bool absolute_fmu_paths) {
     auto* a = root->InsertNewChildElement("agents");
     a->SetAttribute("count", s.agents.count);
     a->SetAttribute("mode", s.agents.synchronous ? "synchronous" : "asynchronous");
-    if (!s.agents.workers.empty()) {
-      std::string names;
-      for (const auto& w : s.agents.workers) names += (names.empty() ? "" : " ") + w;
-      a->SetAttribute("workers", names.c_str());
-    }
+    if (!s.agents.workers.empty())
+      a->SetAttribute("workers", text::join(s.agents.workers, " ").c_str());
   }
   if (!s.failover.standby.empty()) {
     auto* f = root->InsertNewChildElement("failover");
-    std::string names;
-    for (const auto& w : s.failover.standby) names += (names.empty() ? "" : " ") + w;
-    f->SetAttribute("standby", names.c_str());
+    f->SetAttribute("standby", text::join(s.failover.standby, " ").c_str());
     if (s.failover.snapshot_every) f->SetAttribute("snapshot-every", *s.failover.snapshot_every);
   }
   const auto write_component = [&](tinyxml2::XMLElement* parent, const component_spec& c) {

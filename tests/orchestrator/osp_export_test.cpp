@@ -134,6 +134,9 @@ TEST_F(osp_export, what_osp_cannot_say_is_refused_naming_it) {
   s.agents.count = 2;
   EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: <agents>"));
   s = in_code();
+  s.failover.standby = {"s1"};
+  EXPECT_THAT(refusal(s), HasSubstr("cannot export to OSP: <failover>: standby workers"));
+  s = in_code();
   s.find_component("a")->parameters.push_back({"gain", "${output_dir}", {}});
   EXPECT_THAT(refusal(s), HasSubstr("parameter 'a.gain': the placeholder in '${output_dir}'"));
   // no base step given and none declared by the FMU (the fake declares no DefaultExperiment)

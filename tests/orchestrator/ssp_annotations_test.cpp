@@ -33,7 +33,8 @@ TEST_F(ssp_import, recording_agents_and_workers_come_from_strides_annotations) {
   const system_structure s =
       load(replaced(with_settings(R"(<stride:Record enabled="false" interval="0.2" file="out/r.csv">
         <stride:Signal name="a.y"/><stride:Signal name="b[*].u"/></stride:Record>
-        <stride:Agents count="3" mode="asynchronous" workers="w1  w2"/>)"),
+        <stride:Agents count="3" mode="asynchronous" workers="w1  w2"/>
+        <stride:Failover standby="s1 s2" snapshot-every="40"/>)"),
                     R"(<ssd:Connector name="u" kind="input"></ssd:Connector></ssd:Connectors>)",
                     R"(<ssd:Connector name="u" kind="input"></ssd:Connector></ssd:Connectors>
         <ssd:Annotations><ssc:Annotation type="org.stride-sim.component">
@@ -45,6 +46,8 @@ TEST_F(ssp_import, recording_agents_and_workers_come_from_strides_annotations) {
   EXPECT_EQ(s.agents.count, 3);
   EXPECT_FALSE(s.agents.synchronous);
   EXPECT_THAT(s.agents.workers, ElementsAre("w1", "w2"));
+  EXPECT_THAT(s.failover.standby, ElementsAre("s1", "s2"));
+  EXPECT_EQ(s.failover.snapshot_every, 40);
   ASSERT_EQ(s.components.size(), 2u);
   EXPECT_EQ(s.components[0].worker, "");
   EXPECT_EQ(s.components[1].worker, "far");
@@ -108,6 +111,15 @@ TEST_F(ssp_import, malformed_or_misplaced_settings_are_refused) {
       HasSubstr("mode \"later\" is not synchronous or asynchronous"));
   EXPECT_THAT(refusal(with_settings(R"(<stride:Agents count="2" workers=" "/>)"), "<stride:Agents"),
               HasSubstr("workers=\"\" names no worker"));
+  EXPECT_THAT(refusal(with_settings(R"(<stride:Failover standby=" "/>)"), "<stride:Failover"),
+              HasSubstr("standby=\"\" names no worker"));
+  EXPECT_THAT(refusal(with_settings(R"(<stride:Failover standby="s1" snapshot-every="x"/>)"),
+                      "<stride:Failover"),
+              HasSubstr("snapshot-every=\"x\" is not a positive integer"));
+  EXPECT_THAT(refusal(with_settings(R"(<stride:Failover standby="s1"/>
+        <stride:Agents count="2"/>)"),
+                      "<stride:Agents"),
+              HasSubstr("out of order"));
   EXPECT_THAT(refusal(with_settings(R"(<stride:Agents count="2"/>
         <stride:Record/>)"),
                       "<stride:Record"),

@@ -176,7 +176,7 @@ std::string with(const std::string& extra, const std::string& before = "</system
   return text;
 }
 
-TEST_F(ssp_export, replica_copies_recording_workers_and_agents_read_back_as_written) {
+TEST_F(ssp_export, replica_copies_recording_workers_agents_and_standbys_read_back_as_written) {
   // a group of two copies of c, fed by a through a copy range, recorded by signal patterns into
   // another file
   const std::string group = with(R"(<replicate name="w" count="2">
@@ -190,6 +190,7 @@ TEST_F(ssp_export, replica_copies_recording_workers_and_agents_read_back_as_writ
 <record enabled="false" interval="0.02" file="out/r.csv"><signal name="c[*].y"/></record>)",
                                        "</system>", group));
   s.agents = {3, false, {"w1", "w2"}, {}};
+  s.failover = {{"s1", "s2"}, 25, {}};
   const fs::path archive = scratch.path() / "pair.ssp";
   export_ssp(s, archive, options);
   system_structure back = load_system_file(archive);
@@ -210,6 +211,8 @@ TEST_F(ssp_export, replica_copies_recording_workers_and_agents_read_back_as_writ
   EXPECT_EQ(back.agents.count, 3);
   EXPECT_FALSE(back.agents.synchronous);
   EXPECT_THAT(back.agents.workers, ElementsAre("w1", "w2"));
+  EXPECT_THAT(back.failover.standby, ElementsAre("s1", "s2"));
+  EXPECT_EQ(back.failover.snapshot_every, 25);
   const std::string ssd = entries(archive).at("SystemStructure.ssd");
   EXPECT_THAT(ssd, HasSubstr(R"(<ssc:Annotation type="org.stride-sim.component">)"));
   EXPECT_THAT(ssd, HasSubstr(R"(<stride:Component worker="far1">)"));
