@@ -68,6 +68,16 @@ system_structure parse(const std::string& xml) {
   return parse_system_text(xml, "t/test.xml");
 }
 
+// the message parse() refuses `xml` with, or "no error"
+std::string error_of(const std::string& xml) {
+  try {
+    parse(xml);
+  } catch (const validation_error& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
 TEST(cosim_system_xml, parses_every_element) {
   const auto s = parse_system_file(k_data / "chain.xml");
   EXPECT_EQ(s.name, "chain");
@@ -180,14 +190,6 @@ TEST(cosim_system_xml, invalid_model_exchange_settings_name_the_line) {
 }
 
 TEST(cosim_system_xml, strict_syntax_errors_name_the_line) {
-  auto error_of = [](const std::string& xml) {
-    try {
-      parse_system_text(xml, "t/test.xml");
-    } catch (const validation_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   EXPECT_EQ(error_of("<system>\n<component name='a' fmu='m' colour='red'/>\n</system>"),
             "t/test.xml:2: unknown attribute 'colour' on <component>");
   // names and values go into result files: UTF-8 only, the line of the first bad byte named
@@ -303,14 +305,6 @@ TEST(cosim_system_xml, component_names_may_hold_dots_outside_replica_groups) {
   const auto& c = b.execution->connections().at(0);
   EXPECT_EQ(b.execution->component_at(c.to.component).name(), "engine.pump");
   EXPECT_EQ(b.execution->component_at(c.from.component).name(), "engine");
-  const auto error_of = [](const std::string& xml) {
-    try {
-      parse(xml);
-    } catch (const validation_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   EXPECT_THAT(error_of("<system>\n<component name='a..b' fmu='m'/>\n</system>"),
               HasSubstr("t/test.xml:2: component name \"a..b\" must not contain"));
   EXPECT_THAT(error_of("<system>\n<replicate name='g' count='2'>\n<component name='a.b' "
@@ -333,14 +327,6 @@ TEST(cosim_system_xml, agents_are_read_written_and_checked) {
   EXPECT_EQ(parse("<system><component name='a' fmu='m'/></system>").agents.count, 0);
   EXPECT_EQ(to_xml(parse("<system><component name='a' fmu='m'/></system>"), false).find("<agents"),
             std::string::npos);
-  auto error_of = [](const std::string& xml) {
-    try {
-      parse(xml);
-    } catch (const validation_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   EXPECT_EQ(error_of("<system>\n<agents count='0'/><component name='a' fmu='m'/></system>"),
             "t/test.xml:2: count=\"0\" is not a positive integer");
   EXPECT_EQ(error_of("<system>\n<agents count='2' mode='eventually'/>"
@@ -371,14 +357,6 @@ TEST(cosim_system_xml, failover_is_read_written_and_checked) {
   EXPECT_EQ(
       to_xml(parse("<system><component name='a' fmu='m'/></system>"), false).find("<failover"),
       std::string::npos);
-  auto error_of = [](const std::string& xml) {
-    try {
-      parse(xml);
-    } catch (const validation_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   EXPECT_EQ(error_of("<system>\n<failover standby=' '/><component name='a' fmu='m'/></system>"),
             "t/test.xml:2: standby=\"\" names no worker");
   EXPECT_EQ(error_of("<system>\n<failover/><component name='a' fmu='m'/></system>"),
