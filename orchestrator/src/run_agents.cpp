@@ -62,12 +62,12 @@ agents_report run_agents(system_structure system, const run_options& options,
   if (agents.count < 1) {
     throw validation_error("agents: count must be at least 1, got " + std::to_string(agents.count));
   }
-  if (!system.failover.standby.empty()) {
-    // a learner's replayed steps would send their updates to the shared table a second time
+  if (!system.failover.standby.empty() && !system.agents.synchronous) {
+    // a replayed agent must meet the tables it met the first time: only rounds give them again
     const std::string where = system.failover.where.str();
     throw validation_error((where.empty() ? std::string() : where + ": ") +
-                           "standby workers (<failover>, --standby) do not work with agents yet "
-                           "(docs/failover.md)");
+                           "standby workers (<failover>, --standby) need synchronous agents: "
+                           "asynchronous ones cannot walk their steps again (docs/failover.md)");
   }
   system.agents.count = agents.count;
   const bool resuming = !options.resume_dir.empty();

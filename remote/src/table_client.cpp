@@ -1,3 +1,4 @@
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -12,8 +13,10 @@ struct table_client::impl {
   dds::entity participant;
   table_wire::topics topics;
   dds::entity publisher, subscriber, writer, reader, waitset;
-  table_snapshot newest;
-  table_snapshot empty;  // round 0: nothing merged yet
+  table_snapshot newest;                 // the newest table for every agent
+  std::optional<table_snapshot> answer;  // the newest answer to this agent's repeated round
+  bool rejoined = false;  // walks rounds again: a round's table is that round's, never a later one
+  table_snapshot empty;   // round 0: nothing merged yet
 
   impl(const table_endpoint& w, int a)
       : where(w), agent(a), participant(table_wire::participant(w)), topics(participant.get()) {
@@ -40,28 +43,46 @@ struct table_client::impl {
     std::string error;  // thrown after the samples are returned to DDS
     dds::take_all<stride_table_table_state>(
         reader.get(), [&](const stride_table_table_state& s, const dds_sample_info_t&) {
+          if (s.agent != 0) {
+            if (s.agent == agent) answer = snapshot_of(s);
+            return;
+          }
           if (s.error != nullptr && s.error[0] != '\0') {
             error = s.error;
             return;
           }
           if (s.updates < newest.updates && !s.final) return;
-          newest.round = s.round;
-          newest.updates = s.updates;
-          newest.final = s.final;
-          newest.values.assign(s.values._buffer, s.values._buffer + s.values._length);
+          newest = snapshot_of(s);
         });
     if (!error.empty()) {
       throw std::runtime_error("shared table " + where.table + ": the service stopped: " + error);
     }
   }
 
-  template <class Done>
-  const table_snapshot& wait(Done done, std::chrono::milliseconds timeout,
+  static table_snapshot snapshot_of(const stride_table_table_state& s) {
+    table_snapshot t;
+    t.round = s.round;
+    t.updates = s.updates;
+    t.final = s.final;
+    t.values.assign(s.values._buffer, s.values._buffer + s.values._length);
+    return t;
+  }
+
+  // the table of synchronous round `round`, if it is here
+  const table_snapshot* table_of(std::int64_t round) const {
+    if (answer && answer->round == round) return &*answer;
+    if (rejoined) return newest.round == round ? &newest : nullptr;
+    return newest.round >= round || newest.final ? &newest : nullptr;
+  }
+
+  // `found` returns the table waited for, or null
+  template <class Found>
+  const table_snapshot& wait(Found found, std::chrono::milliseconds timeout,
                              const std::string& what) {
     const auto until = std::chrono::steady_clock::now() + timeout;
     for (;;) {
       drain();
-      if (done()) return newest;
+      if (const table_snapshot* t = found()) return *t;
       const auto now = std::chrono::steady_clock::now();
       if (now >= until) {
         throw std::runtime_error("shared table " + where.table + ": agent " +
@@ -127,6 +148,7 @@ void table_client::send(std::int64_t round, std::span<const std::uint32_t> entri
 void table_client::resume(std::int64_t round, std::span<const std::uint32_t> entries,
                           std::span<const double> increments, std::span<const double> initial,
                           bool last) {
+  impl_->rejoined = true;
   write_update(impl_->writer.get(), impl_->where, impl_->agent, round, entries, increments, initial,
                last, true);
 }
@@ -138,12 +160,13 @@ const table_snapshot& table_client::wait_round(std::int64_t round,
     return impl_->newest;
   }
   if (round <= 0) return impl_->empty;
-  return impl_->wait([&] { return impl_->newest.round >= round || impl_->newest.final; }, timeout,
+  return impl_->wait([&] { return impl_->table_of(round); }, timeout,
                      "round " + std::to_string(round));
 }
 
 const table_snapshot& table_client::wait_final(std::chrono::milliseconds timeout) {
-  return impl_->wait([&] { return impl_->newest.final; }, timeout, "the final table");
+  return impl_->wait([&] { return impl_->newest.final ? &impl_->newest : nullptr; }, timeout,
+                     "the final table");
 }
 
 }  // namespace stride::remote

@@ -45,6 +45,10 @@ struct table_service::impl {
   std::vector<bool> ended;                        // per agent: its last update was received
   std::vector<std::int64_t> end_round;            // per agent: the round of its last update
 
+  // every merged round (synchronous): the tables of rounds that rejoined agents walk again
+  std::vector<journal_round> merged;
+  table_snapshot answered;  // the table of the round last answered, to go on from
+
   // journal and resume (synchronous only)
   journal_writer journal;
   journal_contents replay;  // the interrupted run's rounds, while resuming and to verify
@@ -144,7 +148,11 @@ struct table_service::impl {
     if (failed()) return;
     try {
       if (u.resumed) {
-        announce(std::move(u));
+        if (resuming) {
+          announce(std::move(u));
+        } else {
+          rejoin(std::move(u));
+        }
       } else if (resuming) {
         held.push_back(std::move(u));
       } else {
@@ -213,6 +221,10 @@ struct table_service::impl {
   void accept(table_update u) {
     const auto a = index_of(u);
     const std::string from = "agent " + std::to_string(u.agent);
+    if (where.synchronous && u.round >= 1 && u.round <= last_round[a]) {
+      repeated(u);
+      return;
+    }
     if (ended[a]) {
       throw std::runtime_error(from + " sent round " + std::to_string(u.round) + " after its last");
     }
@@ -249,6 +261,70 @@ struct table_service::impl {
     merge_complete_rounds();
   }
 
+  // an agent whose copy continues from an earlier state (a standby worker took over): it says
+  // after which round; rounds it sends again are answered from the merged ones
+  void rejoin(table_update u) {
+    const auto a = index_of(u);
+    const std::string from = "agent " + std::to_string(u.agent);
+    if (!where.synchronous) {
+      throw std::runtime_error(from + " rejoins, but an asynchronous table cannot be walked again");
+    }
+    if (ended[a] && end_round[a] < u.round) {
+      throw std::runtime_error(from + " rejoins after round " + std::to_string(u.round) +
+                               ", but it was left out after round " + std::to_string(end_round[a]));
+    }
+    take_initial(u);
+    if (u.round > last_round[a] + 1) {
+      throw std::runtime_error(from + " rejoins after round " + std::to_string(u.round) +
+                               ", but its last round here is " + std::to_string(last_round[a]));
+    }
+    u.resumed = false;
+    if (u.round >= 1) accept(std::move(u));  // new when it was lost on the way, else repeated
+  }
+
+  // a round an agent sent before: it must be what it sent then; counted once, answered with the
+  // table of that round once merged (the broadcast answers it otherwise)
+  void repeated(const table_update& u) {
+    const auto a = index_of(u);
+    const table_update* first = nullptr;
+    if (u.round <= table.round) {
+      const auto& round = merged[static_cast<std::size_t>(u.round - 1)].updates;
+      const auto it = std::find_if(round.begin(), round.end(),
+                                   [&](const table_update& m) { return m.agent == u.agent; });
+      if (it != round.end()) first = &*it;
+    } else {
+      for (const auto& p : pending[a]) {
+        if (p.round == u.round) first = &p;
+      }
+    }
+    const std::string what =
+        "agent " + std::to_string(u.agent) + " sent round " + std::to_string(u.round) + " again";
+    if (first == nullptr) throw std::runtime_error(what + ", but it was never received");
+    if (!same_update(*first, u)) {
+      throw std::runtime_error(what + ", different from the first time (not deterministic?)");
+    }
+    if (u.round <= table.round) answer(u.agent, u.round);
+  }
+
+  // publishes the table of merged round `round` to agent `agent` alone
+  void answer(int agent, std::int64_t round) {
+    std::lock_guard lock(mutex);
+    if (answered.round > round || answered.values.empty()) {
+      answered = table_snapshot{};
+      answered.values = initial;
+    }
+    for (std::int64_t r = answered.round + 1; r <= round; ++r) {
+      for (const auto& up : merged[static_cast<std::size_t>(r - 1)].updates) {
+        for (std::size_t i = 0; i < up.entries.size(); ++i) {
+          answered.values[up.entries[i]] += up.increments[i];
+        }
+        answered.updates += 1;
+      }
+      answered.round = r;
+    }
+    write_locked(agent, answered);
+  }
+
   // a resumed agent says where it continues; once all have, the table is rebuilt to the oldest
   // such round and the rounds of agents that are further on come from the journal
   void announce(table_update u) {
@@ -276,6 +352,7 @@ struct table_service::impl {
         for (const auto& up : replay.rounds[static_cast<std::size_t>(r - 1)].updates) {
           apply_locked(up);
         }
+        merged.push_back(replay.rounds[static_cast<std::size_t>(r - 1)]);
       }
       table.round = oldest;
       publish_locked();
@@ -352,16 +429,17 @@ struct table_service::impl {
         if (pending[a].empty() || pending[a].front().round != next) complete = false;
       }
       if (!complete || !anyone) return;
-      journal_round merged;
-      merged.round = next;
+      journal_round round;
+      round.round = next;
       for (auto& q : pending) {
         if (q.empty() || q.front().round != next) continue;
-        merged.updates.push_back(std::move(q.front()));
+        round.updates.push_back(std::move(q.front()));
         q.pop_front();
       }
-      record(merged);
+      record(round);
       std::lock_guard lock(mutex);
-      for (const auto& u : merged.updates) apply_locked(u);
+      for (const auto& u : round.updates) apply_locked(u);
+      merged.push_back(std::move(round));
       table.round = next;
       table.final = all_ended() && nothing_pending();
       publish_locked();
@@ -369,22 +447,22 @@ struct table_service::impl {
   }
 
   // a round the interrupted run merged must come out the same; later rounds are journaled
-  void record(const journal_round& merged) {
+  void record(const journal_round& round) {
     const auto journaled = static_cast<std::int64_t>(replay.rounds.size());
-    if (merged.round <= journaled) {
-      const auto& before = replay.rounds[static_cast<std::size_t>(merged.round - 1)].updates;
-      bool same = before.size() == merged.updates.size();
+    if (round.round <= journaled) {
+      const auto& before = replay.rounds[static_cast<std::size_t>(round.round - 1)].updates;
+      bool same = before.size() == round.updates.size();
       for (std::size_t i = 0; same && i < before.size(); ++i) {
-        same = same_update(before[i], merged.updates[i]);
+        same = same_update(before[i], round.updates[i]);
       }
       if (!same) {
-        throw std::runtime_error("round " + std::to_string(merged.round) +
+        throw std::runtime_error("round " + std::to_string(round.round) +
                                  " differs from the journal of the interrupted run: the agents "
                                  "did not repeat what they did (not deterministic?)");
       }
       return;
     }
-    if (journal.active()) journal.round(merged);
+    if (journal.active()) journal.round(round);
   }
 
   void apply_locked(const table_update& u) {
@@ -394,13 +472,16 @@ struct table_service::impl {
     table.updates += 1;
   }
 
-  void publish_locked() {
+  void publish_locked() { write_locked(0, table); }
+
+  void write_locked(int to, const table_snapshot& t) {
     stride_table_table_state s{};
+    s.agent = to;
     s.table = const_cast<char*>(where.table.c_str());
-    s.round = table.round;
-    s.updates = table.updates;
-    table_wire::borrow(s.values, std::span<const double>(table.values));
-    s.final = table.final;
+    s.round = t.round;
+    s.updates = t.updates;
+    table_wire::borrow(s.values, std::span<const double>(t.values));
+    s.final = t.final;
     s.error = const_cast<char*>(error.c_str());
     dds_write(writer.get(), &s);
   }

@@ -166,13 +166,19 @@ TEST_F(failover_run, bad_failover_settings_are_refused_with_the_reason) {
       scratch.path());
   EXPECT_NE(no_standby.exit_code, 0);
   EXPECT_THAT(no_standby.err, HasSubstr("--snapshot-every: no standby worker"));
-  const auto agents = run_command(
-      "'" + k_cli + "' run " + quoted(k_walk_on_worker) + " --agents 2 --standby s1 --domain 152",
-      scratch.path());
-  EXPECT_NE(agents.exit_code, 0);
-  EXPECT_THAT(agents.err, HasSubstr("standby workers (<failover>, --standby) do not work with "
-                                    "agents yet"));
   std::string xml = read_file(k_walk_on_worker);
+  {
+    std::string asynchronous = xml;
+    asynchronous.insert(asynchronous.find("\n", asynchronous.find("<simulation ")) + 1,
+                        "  <agents count=\"2\" mode=\"asynchronous\"/>\n");
+    const fs::path system = scratch.path() / "asynchronous.xml";
+    std::ofstream(system) << asynchronous;
+    const auto agents = run_command(
+        "'" + k_cli + "' run " + quoted(system) + " --standby s1 --domain 152", scratch.path());
+    EXPECT_NE(agents.exit_code, 0);
+    EXPECT_THAT(agents.err, HasSubstr("standby workers (<failover>, --standby) need synchronous "
+                                      "agents"));
+  }
   xml.insert(xml.find("\n", xml.find("<simulation ")) + 1, "  <failover standby=\" \"/>\n");
   const fs::path system = scratch.path() / "empty-standby.xml";
   std::ofstream(system) << xml;

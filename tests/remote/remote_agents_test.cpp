@@ -1,7 +1,8 @@
 // Agents on `stride worker` processes (docs/swarm.md): real workers on loopback, real
 // `stride run --agents`, the demo's closed loop with a shared V. Synchronous agents on workers
 // learn exactly what agents on threads learn; a worker killed in the middle of the run loses
-// its agent, and the others finish. Sweep points on workers too.
+// its agent, and the others finish, or with a standby worker the agent goes on there and the
+// table is the same. Sweep points on workers too.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -119,6 +120,48 @@ TEST_F(remote_agents, a_killed_worker_loses_its_agent_and_the_others_finish) {
   }
   EXPECT_EQ(rows, 455);
   EXPECT_EQ(read(scratch.path() / "run/agent1/v_table.csv").empty(), false);
+}
+
+// The same kill with a standby worker (docs/failover.md): agent 2's loop goes on on s1 from its
+// last state image, re-walks the rounds since then against the tables merged then, and the run
+// learns exactly what the undisturbed one learns.
+TEST_F(remote_agents, a_killed_agents_worker_fails_over_and_the_shared_table_is_unchanged) {
+  const std::string steps = "--set learner.total_steps=40";
+  const auto undisturbed = run(k_demo, "threads", "--agents 2 " + steps);
+  ASSERT_EQ(undisturbed.exit_code, 0) << undisturbed.err;
+  auto w1 = start_worker("w1", 170);
+  auto w2 = start_worker("w2", 170);
+  auto s1 = start_worker("s1", 170);
+  ASSERT_TRUE(w1.ready() && w2.ready() && s1.ready()) << w1.output() << w2.output();
+  std::thread killer([&] {
+    // in the middle of agent 2's share (20 steps), between two of its state images
+    const fs::path log = scratch.path() / "run" / "agent2" / "steps.csv";
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < until) {
+      const std::string text = read(log);
+      if (std::count(text.begin(), text.end(), '\n') > 8) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    w2.stop(SIGKILL);
+  });
+  const auto r = run(demo_with_agents("count=\"2\" workers=\"w1 w2\""), "run",
+                     "--domain 170 --standby s1 --snapshot-every 250 " + steps);
+  killer.join();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("worker 'w2' is lost after t = "));
+  EXPECT_THAT(r.out, HasSubstr("2 of 2 agents finished"));
+  // the rounds walked again were counted once
+  const auto merged = [](const std::string& out) {
+    const auto at = out.find("merged ");
+    return out.substr(at, out.find('\n', at) - at);
+  };
+  EXPECT_EQ(merged(r.out), merged(undisturbed.out));
+  for (const char* f : {"shared_table.csv", "agent1/v_table.csv", "agent1/steps.csv",
+                        "agent2/steps.csv", "agent2/episodes.csv", "agent2/results.csv"}) {
+    EXPECT_EQ(file("run", f), file("threads", f)) << f;
+  }
+  EXPECT_THAT(file("run", "agent2/manifest.json"), HasSubstr("\"events\": {\"failovers\": 1}"));
+  EXPECT_THAT(s1.output(), HasSubstr("loaded learner"));
 }
 
 // `stride sweep --workers`: the points run in turn on the workers, with the files of points

@@ -1,10 +1,12 @@
 // The shared table over real Cyclone DDS (loopback, in one process): the merge order of
-// synchronous rounds, asynchronous merging, the final table, refused updates and abandoning.
+// synchronous rounds, asynchronous merging, the final table, refused updates, agents that rejoin
+// from an earlier state, and abandoning.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cstdint>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -173,6 +175,106 @@ TEST(shared_table, a_lost_agent_is_left_out_of_later_rounds) {
   EXPECT_EQ(t.round, 2);
   EXPECT_EQ(t.updates, 3);
   EXPECT_EQ(t.values, std::vector<double>{7.0});
+}
+
+// Agent 1 adds r to entry 0 in round r, agent 2 adds 10 r to entry 1.
+std::vector<double> increment(int agent, std::int64_t round) {
+  return {static_cast<double>(round) * (agent == 1 ? 1.0 : 10.0)};
+}
+const std::vector<std::uint32_t> k_entry1 = {1};
+const std::vector<std::uint32_t>& entry_of(int agent) {
+  return agent == 1 ? k_entry0 : k_entry1;
+}
+const std::vector<double> k_zeros = {0.0, 0.0};
+
+void send_round(table_client& c, int agent, std::int64_t round) {
+  c.send(round, entry_of(agent), increment(agent, round),
+         round == 1 ? std::span<const double>(k_zeros) : std::span<const double>());
+}
+
+// A copy of agent 1 made anew from its state after round 2 (its worker was lost) walks rounds 3
+// and 4 again: each wait gives the table of that round, not the newest, and nothing counts twice.
+TEST(shared_table, a_rejoined_agent_meets_the_tables_of_the_rounds_it_walks_again) {
+  const table_endpoint where = endpoint(2, true);
+  table_service service(where);
+  table_client a1(where, 1), a2(where, 2);
+  std::vector<table_snapshot> seen(5);
+  for (std::int64_t r = 1; r <= 4; ++r) {
+    send_round(a1, 1, r);
+    send_round(a2, 2, r);
+    seen[static_cast<std::size_t>(r)] = a1.wait_round(r, 10s);
+  }
+  EXPECT_EQ(seen[4].values, (std::vector<double>{10.0, 100.0}));
+  table_client copy(where, 1);
+  copy.resume(2, k_entry0, increment(1, 2), k_zeros, false);
+  for (std::int64_t r = 2; r <= 4; ++r) {
+    if (r > 2) send_round(copy, 1, r);
+    const table_snapshot& t = copy.wait_round(r, 10s);
+    EXPECT_EQ(t.round, r);
+    EXPECT_EQ(t.updates, 2 * r);
+    EXPECT_EQ(t.values, seen[static_cast<std::size_t>(r)].values) << "round " << r;
+  }
+  EXPECT_EQ(service.current().updates, 8);
+  EXPECT_EQ(service.current().values, seen[4].values);
+  // and it goes on with the others
+  send_round(copy, 1, 5);
+  send_round(a2, 2, 5);
+  EXPECT_EQ(copy.wait_round(5, 10s).values, (std::vector<double>{15.0, 150.0}));
+  EXPECT_EQ(service.error(), "");
+}
+
+// The copy's state may be older than a round the service holds but has not merged, or newer than
+// what reached the service (the lost worker's last update never arrived).
+TEST(shared_table, a_rejoined_agent_fits_rounds_not_merged_and_rounds_never_received) {
+  const table_endpoint where = endpoint(2, true);
+  table_service service(where);
+  table_client a1(where, 1), a2(where, 2);
+  send_round(a1, 1, 1);
+  send_round(a2, 2, 1);
+  send_round(a1, 1, 2);  // agent 2 has not sent round 2: not merged
+  ASSERT_EQ(a1.wait_round(1, 10s).round, 1);
+  table_client copy(where, 1);
+  copy.resume(1, k_entry0, increment(1, 1), k_zeros, false);
+  EXPECT_EQ(copy.wait_round(1, 10s).values, (std::vector<double>{1.0, 10.0}));
+  send_round(copy, 1, 2);  // the same again: waits like the first
+  EXPECT_THROW(copy.wait_round(2, 300ms), std::runtime_error);
+  send_round(a2, 2, 2);
+  EXPECT_EQ(copy.wait_round(2, 10s).values, (std::vector<double>{3.0, 30.0}));
+  // a second copy resumes after round 3, which the service never received: it is new
+  table_client later(where, 1);
+  later.resume(3, k_entry0, increment(1, 3), k_zeros, false);
+  send_round(a2, 2, 3);
+  const table_snapshot& t = later.wait_round(3, 10s);
+  EXPECT_EQ(t.values, (std::vector<double>{6.0, 60.0}));
+  EXPECT_EQ(t.updates, 6);
+  EXPECT_EQ(service.error(), "");
+}
+
+TEST(shared_table, a_round_sent_again_otherwise_stops_the_service) {
+  const table_endpoint where = endpoint(1, true);
+  table_service service(where);
+  table_client a1(where, 1);
+  send_round(a1, 1, 1);
+  send_round(a1, 1, 2);
+  ASSERT_EQ(a1.wait_round(2, 10s).round, 2);
+  table_client copy(where, 1);
+  copy.resume(1, k_entry0, increment(1, 1), k_zeros, false);
+  copy.send(2, k_entry0, std::vector<double>{2.5});
+  const auto until = std::chrono::steady_clock::now() + 10s;
+  while (service.error().empty() && std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(5ms);
+  }
+  EXPECT_THAT(service.error(), HasSubstr("agent 1 sent round 2 again, different from the first "
+                                         "time"));
+  EXPECT_THROW(copy.wait_round(3, 10s), std::runtime_error);  // the agent hears of it
+  // a copy further on than anything the service has
+  const table_endpoint other = endpoint(1, true);
+  table_service fresh(other);
+  table_client ahead(other, 1);
+  ahead.resume(5, k_entry0, increment(1, 5), k_zeros, false);
+  EXPECT_THROW(ahead.wait_round(5, 10s), std::runtime_error);
+  EXPECT_THAT(fresh.error(), HasSubstr("agent 1 rejoins after round 5, but its last round here "
+                                       "is 0"));
 }
 
 TEST(shared_table, abandoning_releases_waiting_agents_at_once) {

@@ -228,14 +228,15 @@ std::FILE* artefact_writer::open(const std::string& name, const std::string& hea
       if (first == header) cut = header.size() + 1;  // no checkpoint yet: the header alone
     }
   }
-  if (cut) {
-    f = std::fopen(file.c_str(), "ab");
-  } else {
-    f = std::fopen(file.c_str(), "wb");
-    if (f != nullptr) std::fputs((header + "\n").c_str(), f);
+  // a new file is emptied and gets its header only at the first cut (see the class comment)
+  std::string pending_header;
+  if (!cut) {
+    cut = 0;
+    pending_header = header + "\n";
   }
+  f = std::fopen(file.c_str(), "ab");
   if (f == nullptr) throw learner_error("cannot write " + file.string() + ": " + errno_text());
-  files_.push_back({name, f, cut});
+  files_.push_back({name, f, cut, std::move(pending_header)});
   return f;
 }
 
@@ -256,12 +257,20 @@ void artefact_writer::apply_cuts() {
       throw learner_error("cannot truncate " + file.string() + ": " + errno_text());
     }
     lf.cut.reset();
+    if (!lf.header.empty() &&
+        std::fwrite(lf.header.data(), 1, lf.header.size(), lf.f) != lf.header.size()) {
+      throw learner_error("cannot write " + file.string() + ": " + errno_text());
+    }
+    lf.header.clear();
   }
 }
 
 void artefact_writer::cut_back(const std::map<std::string, std::uint64_t>& sizes) {
   for (auto& lf : files_) {
-    if (const auto it = sizes.find(lf.name); it != sizes.end()) lf.cut = it->second;
+    if (const auto it = sizes.find(lf.name); it != sizes.end()) {
+      lf.cut = it->second;
+      lf.header.clear();  // the saved size includes it
+    }
   }
 }
 

@@ -22,6 +22,7 @@
 // Data layout: parameters, inputs, outputs and the session state (trivially copyable) live in
 // the data struct; the value table (any size) and the traces live in the model, and
 // save_state/restore_state append them to the data bytes.
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -463,6 +464,18 @@ class learner_model : public sdk::model_base<learner_data> {
       put(name.data(), name.size());
       put(&size, sizeof size);
     }
+    // an agent sharing V: where it is in the rounds, so that a restored copy can rejoin them
+    const std::uint64_t shares = shared_ ? 1 : 0;
+    put(&shares, sizeof shares);
+    if (shared_) {
+      const shared_checkpoint sh = shared_place();
+      const std::uint64_t ne = sh.entries.size();
+      put(&sh.round, sizeof sh.round);
+      put(&sh.merged_updates, sizeof sh.merged_updates);
+      put(&ne, sizeof ne);
+      put(sh.entries.data(), ne * sizeof(std::uint32_t));
+      put(sh.increments.data(), ne * sizeof(double));
+    }
     return bytes;
   }
 
@@ -506,7 +519,30 @@ class learner_model : public sdk::model_base<learner_data> {
       get(name.data(), n);
       get(&sizes[name], sizeof(std::uint64_t));
     }
+    std::uint64_t shares = 0;
+    get(&shares, sizeof shares);
+    std::optional<shared_checkpoint> place;
+    if (shares != 0) {
+      shared_checkpoint sh;
+      std::uint64_t ne = 0;
+      get(&sh.round, sizeof sh.round);
+      get(&sh.merged_updates, sizeof sh.merged_updates);
+      get(&ne, sizeof ne);
+      if (ne > (bytes.size() - pos) / (sizeof(std::uint32_t) + sizeof(double))) {
+        throw sdk::model_error("learner state is truncated");
+      }
+      sh.entries.resize(ne);
+      sh.increments.resize(ne);
+      get(sh.entries.data(), ne * sizeof(std::uint32_t));
+      get(sh.increments.data(), ne * sizeof(double));
+      place = std::move(sh);
+    }
     if (pos != bytes.size()) throw sdk::model_error("learner state has trailing bytes");
+    if (data_.started && place.has_value() != (shared_ != nullptr)) {
+      throw sdk::model_error(place ? "learner state is of an agent sharing V, this learner does not"
+                                   : "learner state is of a learner with V of its own, this one "
+                                     "shares V");
+    }
     const bool was_started = data_.started;
     sdk::model_base<learner_data>::restore_state(bytes.first(sizeof(learner_data)));
     if (data_.started && !was_started) {
@@ -515,6 +551,7 @@ class learner_model : public sdk::model_base<learner_data> {
     values_.values() = std::move(v);
     traces_ = std::move(z);
     if (writer_.active() && !sizes.empty()) writer_.cut_back(sizes);
+    if (shared_ && place) rejoin_shared_table(*place);
   }
 
  private:
@@ -563,6 +600,31 @@ class learner_model : public sdk::model_base<learner_data> {
     } catch (const std::exception& e) {
       throw sdk::model_error(e.what());
     }
+  }
+
+  // this agent's place in the shared rounds (its checkpoint and state images carry it)
+  shared_checkpoint shared_place() const {
+    shared_checkpoint sh;
+    sh.round = shared_->last_round();
+    sh.entries = shared_->last_entries();
+    sh.increments = shared_->last_increments();
+    sh.merged_updates = shared_->merged_updates();
+    sh.snapshots_written = next_snapshot_;
+    return sh;
+  }
+
+  // a restored state (e.g. on a standby worker, docs/failover.md): the table service answers
+  // the rounds this agent walks again with the tables it merged then, counting nothing twice
+  void rejoin_shared_table(const shared_checkpoint& at) {
+    try {
+      shared_->rejoin(at);
+    } catch (const std::exception& e) {
+      throw sdk::model_error(e.what());
+    }
+    // the snapshots up to the merged table it had were written then
+    next_snapshot_ = static_cast<std::size_t>(
+        std::upper_bound(snapshots_.begin(), snapshots_.end(), at.merged_updates) -
+        snapshots_.begin());
   }
 
   // agent 1 writes the V snapshots the merged tables pass (RL steps of all agents counted)
@@ -629,15 +691,7 @@ class learner_model : public sdk::model_base<learner_data> {
       ck.values = values_.values();
       ck.traces = traces_.entries;
       ck.file_sizes = writer_.flush();
-      if (shared_) {
-        shared_checkpoint sh;
-        sh.round = shared_->last_round();
-        sh.entries = shared_->last_entries();
-        sh.increments = shared_->last_increments();
-        sh.merged_updates = shared_->merged_updates();
-        sh.snapshots_written = next_snapshot_;
-        ck.shared = std::move(sh);
-      }
+      if (shared_) ck.shared = shared_place();
       write_checkpoint(writer_.dir() / run_files::checkpoint, ck);
     }
     log_progress(e, finished);

@@ -21,13 +21,15 @@ shared_values::shared_values(dense_value_table& replica, std::vector<double> ini
       last_step_(last_step),
       on_merged_(std::move(on_merged)),
       initial_(std::move(initial)) {
-  if (resumed != nullptr) {
-    entries_ = resumed->entries;
-    increments_ = resumed->increments;
-    last_round_ = resumed->round;
-    merged_updates_ = resumed->merged_updates;
-    client_.resume(last_round_, entries_, increments_, initial_, last_round_ >= last_step_);
-  }
+  if (resumed != nullptr) rejoin(*resumed);
+}
+
+void shared_values::rejoin(const shared_checkpoint& at) {
+  entries_ = at.entries;
+  increments_ = at.increments;
+  last_round_ = at.round;
+  merged_updates_ = at.merged_updates;
+  client_.resume(last_round_, entries_, increments_, initial_, last_round_ >= last_step_);
 }
 
 void shared_values::add(std::size_t s, double delta) {

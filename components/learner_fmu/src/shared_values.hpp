@@ -33,6 +33,10 @@ class shared_values final : public value_table {
   void before_update(std::int64_t step) override;
   void after_update(std::int64_t step) override;
 
+  /// A restored state continues after `at.round` (a copy of this agent made anew, e.g. on a
+  /// standby worker): the service answers the rounds it walks again with the tables it merged
+  /// then and counts their updates no second time.
+  void rejoin(const shared_checkpoint& at);
   /// After this agent's last step: waits for every agent's and takes the final table.
   void finish();
   /// Updates merged into the replica's table, all agents counted.

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -29,6 +30,11 @@ std::string error_of(const std::function<void()>& f) {
     return e.what();
   }
   return "(no error)";
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -668,6 +674,43 @@ TEST(learner_artefacts, run_files_read_back_what_was_written) {
   EXPECT_EQ(run_files::snapshot_step("v_snapshot_x.csv"), -1);
   EXPECT_EQ(run_files::snapshot_step("v_table.csv"), -1);
   EXPECT_THAT(error_of([&] { read_best(dir / "nothing.txt"); }), HasSubstr("nothing.txt"));
+  fs::remove_all(dir);
+}
+
+// A learner re-created after a lost worker opens its logs afresh and then restores a state: the
+// rows up to that state must survive (docs/failover.md); a fresh run still replaces old logs.
+TEST(learner_artefacts,
+     new_logs_replace_old_ones_at_the_first_row_so_a_restored_state_keeps_its_rows) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("stride-learner-logs-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const auto g = state_grid::parse("period_time:450:960:15,swing_right_left:15:39:2");
+  const fs::path episodes = dir / run_files::episodes;
+  std::ofstream(episodes) << "rows of an older run\n";
+  const auto text = [&] { return read_text(episodes); };
+  episode_record e;
+  e.episode = 1;
+  std::map<std::string, std::uint64_t> saved;
+  {
+    artefact_writer first(dir, g, false, nullptr);
+    EXPECT_EQ(text(), "rows of an older run\n");  // not yet: nothing was written
+    first.episode(e);
+    saved = first.flush();
+    e.episode = 2;
+    first.episode(e);
+  }
+  const std::string at_save = text().substr(0, saved.at(run_files::episodes));
+  EXPECT_THAT(at_save, HasSubstr("episode,steps"));
+  EXPECT_THAT(text(), HasSubstr("\n2,"));
+  {
+    artefact_writer again(dir, g, false, nullptr);  // the re-created instance
+    again.cut_back(saved);                          // its restored state
+  }
+  EXPECT_EQ(text(), at_save);
+  { artefact_writer fresh(dir, g, false, nullptr); }  // a new run writes nothing
+  EXPECT_EQ(text(),
+            "episode,steps,falls,reward,sum_abs_dv,start_period_time,"
+            "start_swing_right_left,rl_step,time,complete\n");
   fs::remove_all(dir);
 }
 

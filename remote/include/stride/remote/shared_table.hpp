@@ -58,12 +58,15 @@ class table_client {
             bool last = false);
   /// A resumed agent (docs/swarm.md): it continues after round `round` (0: from the start), whose
   /// update `entries`/`increments` it sent before the interruption (`last`: its final one).
-  /// Sent instead of round 1.
+  /// Sent instead of round 1. The same in a running table rejoins it (an agent's copy restored
+  /// from an earlier state, docs/failover.md): rounds it sends again are checked against the
+  /// first time, counted once, and answered with the table merged then.
   void resume(std::int64_t round, std::span<const std::uint32_t> entries,
               std::span<const double> increments, std::span<const double> initial, bool last);
   /// Synchronous: waits until round `round` is merged (round 0: returns at once with nothing
-  /// merged). Asynchronous: the newest table the service published, without waiting.
-  /// `timeout` bounds the wait. \throws std::runtime_error on timeout or a service error.
+  /// merged); after resume(), the table of exactly that round. Asynchronous: the newest table the
+  /// service published, without waiting. `timeout` bounds the wait. \throws std::runtime_error on
+  /// timeout or a service error.
   const table_snapshot& wait_round(std::int64_t round, std::chrono::milliseconds timeout);
   /// Waits for the final table (after every agent's last update).
   const table_snapshot& wait_final(std::chrono::milliseconds timeout);

@@ -75,11 +75,14 @@ void write_value_table(const std::filesystem::path& file, const state_grid& grid
 /// Appends rows to the run's CSV logs; each file gets its header when created. On resume the
 /// files are cut back to the sizes recorded in the checkpoint, so rows written after it vanish.
 /// The cut is made before the first row is written (or flush/close), so that a saved state
-/// restored in between (cut_back) can still keep the rows up to its own moment.
+/// restored in between (cut_back) can still keep the rows up to its own moment. That holds for
+/// new files too: they are replaced only then, so an instance re-created after a lost worker
+/// (docs/failover.md) continues the rows its restored state had.
 class artefact_writer {
  public:
   artefact_writer() = default;
-  /// Opens (creating `dir`) the logs. `resume_sizes` null: new files (existing ones replaced);
+  /// Opens (creating `dir`) the logs. `resume_sizes` null: new files (existing ones replaced at
+  /// the first row, flush or close unless cut_back comes first);
   /// else existing logs are continued, cut back to their size in the map (absent: to the header
   /// alone, as if new).
   artefact_writer(std::filesystem::path dir, const state_grid& grid, bool log_steps,
@@ -109,6 +112,7 @@ class artefact_writer {
     std::string name;
     std::FILE* f = nullptr;
     std::optional<std::uint64_t> cut;  ///< pending: the size to cut the file back to
+    std::string header;                ///< pending: written after the cut (a new file)
   };
   void apply_cuts();
   std::FILE* open(const std::string& name, const std::string& header,
