@@ -8,8 +8,8 @@
 #include <span>
 #include <sstream>
 
+#include "run_checkpoint.hpp"
 #include "run_files.hpp"
-#include "state_bytes.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/observers.hpp"
 
@@ -124,40 +124,6 @@ std::string manifest_json(const manifest_data& m) {
   }
   j << "]\n}\n";
   return j.str();
-}
-
-constexpr std::string_view k_checkpoint_magic = "stride run checkpoint 1";
-
-void write_checkpoint(const fs::path& file, time_point t, const std::vector<std::byte>& state) {
-  detail::byte_writer w;
-  w.put_string(std::string(k_checkpoint_magic));
-  w.put(static_cast<std::int64_t>(t.time_since_epoch().count()));
-  w.put_bytes(state);
-  const std::vector<std::byte> bytes = w.take();
-  // whole or not at all: a checkpoint cut short would be worse than none
-  write_file(file, std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-}
-
-struct checkpoint_data {
-  time_point time{};
-  std::vector<std::byte> state;
-};
-
-checkpoint_data read_checkpoint(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.eof() && !in) throw error("cannot read " + file.string());
-  const auto bytes = std::as_bytes(std::span(text.data(), text.size()));
-  detail::byte_reader r(bytes, file.string());
-  if (r.get_string() != k_checkpoint_magic) {
-    throw validation_error(file.string() + ": not a checkpoint of this version of stride");
-  }
-  checkpoint_data c;
-  c.time = time_point(duration(r.get<std::int64_t>()));
-  const auto state = r.get_bytes();
-  c.state.assign(state.begin(), state.end());
-  if (!r.at_end()) r.fail();
-  return c;
 }
 
 }  // namespace
@@ -322,9 +288,9 @@ run_report run_system(system_structure system, const run_options& options) {
       system, fs::absolute(report.output_dir),
       resuming ? fs::absolute(options.resume_dir) : fs::path(), placeholders);
   // a run interrupted between two steps left the state of the whole system: go on from there
-  std::optional<checkpoint_data> saved;
+  std::optional<detail::checkpoint_data> saved;
   if (resuming && !as_agent && fs::exists(checkpoint_file(options.resume_dir))) {
-    saved = read_checkpoint(checkpoint_file(options.resume_dir));
+    saved = detail::read_checkpoint(checkpoint_file(options.resume_dir));
   }
   if (resuming && resume_uses == 0 && !saved) {
     throw validation_error("--resume: " + options.resume_dir.string() +
@@ -479,8 +445,8 @@ run_report run_system(system_structure system, const run_options& options) {
       // between two steps: every component can be saved as it is now (agents are resumed
       // from their journal instead, stride/cosim/run_agents.hpp)
       try {
-        write_checkpoint(checkpoint_file(report.output_dir), ex.current_time(),
-                         ex.save_state_bytes());
+        detail::write_checkpoint(checkpoint_file(report.output_dir), ex.current_time(),
+                                 ex.save_state_bytes());
         m.checkpoint = checkpoint_file({}).string();
       } catch (const std::exception& e) {
         std::error_code ec;

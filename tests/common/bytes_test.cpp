@@ -1,5 +1,6 @@
-// Saved states as bytes: what byte_writer writes, byte_reader reads back, and damaged bytes
-// (cut short, or a length larger than what follows) throw the caller's error type.
+// Saved states as bytes: what byte_writer writes (little-endian on every host), byte_reader reads
+// back, and damaged bytes (cut short, or a length larger than what follows) throw the caller's
+// error type.
 #include "stride/common/bytes.hpp"
 
 #include <gtest/gtest.h>
@@ -32,6 +33,24 @@ TEST(common_bytes, values_and_strings_read_back_in_order) {
   EXPECT_FALSE(r.at_end());
   EXPECT_EQ(r.get<std::uint8_t>(), 7);
   EXPECT_TRUE(r.at_end());
+}
+
+// The bytes are the same on every host: least significant first, doubles as IEEE 754.
+TEST(common_bytes, numbers_are_little_endian_whatever_the_host) {
+  byte_writer w;
+  w.put(std::uint32_t{0x01020304});
+  w.put(1.0);
+  w.put(std::int16_t{-2});
+  const std::vector<std::byte> expected = {
+      std::byte{0x04}, std::byte{0x03}, std::byte{0x02}, std::byte{0x01},  // uint32
+      std::byte{0x00}, std::byte{0x00}, std::byte{0x00}, std::byte{0x00},  // 1.0
+      std::byte{0x00}, std::byte{0x00}, std::byte{0xf0}, std::byte{0x3f},
+      std::byte{0xfe}, std::byte{0xff}};  // int16 -2
+  EXPECT_EQ(w.bytes(), expected);
+  byte_reader<damaged> r(expected, "x");
+  EXPECT_EQ(r.get<std::uint32_t>(), 0x01020304u);
+  EXPECT_EQ(r.get<double>(), 1.0);
+  EXPECT_EQ(r.get<std::int16_t>(), -2);
 }
 
 TEST(common_bytes, reading_past_the_end_throws_the_callers_error_with_its_message) {

@@ -1,8 +1,11 @@
-// Saved states and checkpoints as bytes: fixed-width integers and doubles in host byte order,
-// lengths (64-bit) before byte strings. Files written this way are read back on the machine kind
-// that wrote them.
+// Saved states and checkpoints as bytes: numbers (fixed-width integers, IEEE doubles) in
+// little-endian byte order whatever the host's, lengths (64-bit) before byte strings. So what one
+// machine writes any other reads (docs/checkpoint-format.md).
 #pragma once
 
+#include <algorithm>
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -14,13 +17,24 @@
 
 namespace stride::common {
 
+/// A number or an enumeration: what byte_writer and byte_reader encode.
+template <class T>
+concept encodable_number = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+
+/// `v`'s bytes, least significant first.
+template <encodable_number T>
+std::array<std::byte, sizeof(T)> little_endian_bytes(T v) {
+  auto raw = std::bit_cast<std::array<std::byte, sizeof(T)>>(v);
+  if constexpr (std::endian::native == std::endian::big) std::reverse(raw.begin(), raw.end());
+  return raw;
+}
+
 class byte_writer {
  public:
-  template <class T>
-  requires std::is_trivially_copyable_v<T>
+  template <encodable_number T>
   void put(const T& v) {
-    const auto* p = reinterpret_cast<const std::byte*>(&v);
-    bytes_.insert(bytes_.end(), p, p + sizeof v);
+    const auto raw = little_endian_bytes(v);
+    bytes_.insert(bytes_.end(), raw.begin(), raw.end());
   }
   void put_size(std::size_t n) { put(static_cast<std::uint64_t>(n)); }
   void put_bytes(std::span<const std::byte> b) {
@@ -42,11 +56,12 @@ class byte_reader {
  public:
   byte_reader(std::span<const std::byte> bytes, std::string message)
       : bytes_(bytes), message_(std::move(message)) {}
-  template <class T>
-  requires std::is_trivially_copyable_v<T> T get() {
-    T v;
-    std::memcpy(&v, take(sizeof v).data(), sizeof v);
-    return v;
+  template <encodable_number T>
+  T get() {
+    std::array<std::byte, sizeof(T)> raw;
+    std::memcpy(raw.data(), take(sizeof(T)).data(), sizeof(T));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(raw.begin(), raw.end());
+    return std::bit_cast<T>(raw);
   }
   /// A length; never more than `item_size`-byte items can follow in what is left.
   std::size_t get_size(std::size_t item_size = 1) {

@@ -1,0 +1,80 @@
+#include "run_checkpoint.hpp"
+
+#include <bit>
+#include <fstream>
+#include <iterator>
+
+#include "run_files.hpp"
+#include "state_bytes.hpp"
+#include "stride/cosim/error.hpp"
+
+namespace stride::cosim::detail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// version 1 named its version in the magic and had no byte-order field
+constexpr std::string_view k_magic_v1 = "stride run checkpoint 1";
+constexpr std::string_view k_magic = "stride run checkpoint";
+
+enum class byte_order : std::uint8_t { little = 0, big = 1 };
+
+constexpr byte_order host_order() {
+  return std::endian::native == std::endian::big ? byte_order::big : byte_order::little;
+}
+
+std::string order_name(byte_order o) {
+  return o == byte_order::big ? "big-endian" : "little-endian";
+}
+
+}  // namespace
+
+void write_checkpoint(const fs::path& file, time_point t, std::span<const std::byte> state) {
+  byte_writer w;
+  w.put_string(std::string(k_magic));
+  w.put(k_checkpoint_version);
+  // the components' images are theirs: an FMU writes its state in its host's byte order
+  w.put(host_order());
+  w.put(static_cast<std::int64_t>(t.time_since_epoch().count()));
+  w.put_bytes(state);
+  const std::vector<std::byte> bytes = w.take();
+  // whole or not at all: a checkpoint cut short would be worse than none
+  write_file(file, std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+checkpoint_data read_checkpoint(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.eof() && !in) throw error("cannot read " + file.string());
+  const auto bytes = std::as_bytes(std::span(text.data(), text.size()));
+  byte_reader r(bytes, file.string());
+  const std::string magic = r.get_string();
+  if (magic != k_magic && magic != k_magic_v1) {
+    throw validation_error(file.string() + ": not a checkpoint of stride");
+  }
+  if (magic == k_magic) {
+    const auto version = r.get<std::uint32_t>();
+    if (version != k_checkpoint_version) {
+      throw validation_error(file.string() + ": checkpoint version " + std::to_string(version) +
+                             " is unknown: this stride reads versions 1 to " +
+                             std::to_string(k_checkpoint_version) + " (docs/checkpoint-format.md)");
+    }
+    const auto order = r.get<byte_order>();
+    if (order != byte_order::little && order != byte_order::big) r.fail();
+    if (order != host_order()) {
+      throw validation_error(file.string() + ": written on a " + order_name(order) +
+                             " host; the components' state images in it are in that byte order, "
+                             "this host is " +
+                             order_name(host_order()) + " (docs/checkpoint-format.md)");
+    }
+  }
+  checkpoint_data c;
+  c.time = time_point(duration(r.get<std::int64_t>()));
+  const auto state = r.get_bytes();
+  c.state.assign(state.begin(), state.end());
+  if (!r.at_end()) r.fail();
+  return c;
+}
+
+}  // namespace stride::cosim::detail

@@ -1,0 +1,35 @@
+// The checkpoint file of an interrupted run (`checkpoint.stride`, docs/checkpoint-format.md):
+// versioned, its numbers little-endian on every host, with the byte order of the machine whose
+// components wrote the state images inside.
+#ifndef STRIDE_COSIM_RUN_CHECKPOINT_HPP
+#define STRIDE_COSIM_RUN_CHECKPOINT_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "stride/cosim/time.hpp"
+
+namespace stride::cosim::detail {
+
+/// The version this build writes; it reads every version up to it.
+inline constexpr std::uint32_t k_checkpoint_version = 2;
+
+struct checkpoint_data {
+  time_point time{};
+  std::vector<std::byte> state;  ///< execution::save_state_bytes()
+};
+
+/// Writes `file` whole or not at all. \throws error when it cannot be written.
+void write_checkpoint(const std::filesystem::path& file, time_point t,
+                      std::span<const std::byte> state);
+/// \throws validation_error naming the file for a file that is not a checkpoint, is damaged, has
+/// an unknown version, or holds state images of a byte order other than this host's.
+checkpoint_data read_checkpoint(const std::filesystem::path& file);
+
+}  // namespace stride::cosim::detail
+
+#endif  // STRIDE_COSIM_RUN_CHECKPOINT_HPP
