@@ -21,6 +21,12 @@ bool same_update(const table_update& a, const table_update& b) {
                      a.increments.size() * sizeof(double)) == 0;
 }
 
+// adds one agent's update to a table
+void apply(table_snapshot& t, const table_update& u) {
+  for (std::size_t i = 0; i < u.entries.size(); ++i) t.values[u.entries[i]] += u.increments[i];
+  t.updates += 1;
+}
+
 }  // namespace
 
 struct table_service::impl {
@@ -314,12 +320,7 @@ struct table_service::impl {
       answered.values = initial;
     }
     for (std::int64_t r = answered.round + 1; r <= round; ++r) {
-      for (const auto& up : merged[static_cast<std::size_t>(r - 1)].updates) {
-        for (std::size_t i = 0; i < up.entries.size(); ++i) {
-          answered.values[up.entries[i]] += up.increments[i];
-        }
-        answered.updates += 1;
-      }
+      for (const auto& up : merged[static_cast<std::size_t>(r - 1)].updates) apply(answered, up);
       answered.round = r;
     }
     write_locked(agent, answered);
@@ -465,12 +466,7 @@ struct table_service::impl {
     if (journal.active()) journal.round(round);
   }
 
-  void apply_locked(const table_update& u) {
-    for (std::size_t i = 0; i < u.entries.size(); ++i) {
-      table.values[u.entries[i]] += u.increments[i];
-    }
-    table.updates += 1;
-  }
+  void apply_locked(const table_update& u) { apply(table, u); }
 
   void publish_locked() { write_locked(0, table); }
 

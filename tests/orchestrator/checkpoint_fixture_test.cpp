@@ -2,7 +2,10 @@
 // was interrupted by SIGINT on another machine, in another folder, and is checked in. Resumed
 // here, in a folder of its own, it ends where a run that was never stopped ends. A checkpoint of
 // an unknown version, or with state images of the other byte order, is refused naming why; one
-// of version 1 is still read.
+// of version 1 is still read. The fixture holds state images of the stride_test FMU: when its
+// variables or data change (a new GUID or layout), make it again: run stride_test_counting.xml
+// with --stop-time 10000 --record-interval 0.5, SIGINT it, keep the header and first rows of
+// results.csv, set stop="1000" in system.xml, and set k_checkpoint_time to "interrupted_at".
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

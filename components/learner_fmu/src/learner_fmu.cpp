@@ -21,7 +21,8 @@
 //
 // Data layout: parameters, inputs, outputs and the session state (trivially copyable) live in
 // the data struct; the value table (any size) and the traces live in the model, and
-// save_state/restore_state append them to the data bytes.
+// save_state/restore_state append them to the data bytes, with an agent's place in the shared
+// rounds (a restored agent rejoins them, docs/failover.md).
 #include <algorithm>
 #include <chrono>
 #include <cstring>
