@@ -1,6 +1,7 @@
 #include "commands.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -180,6 +181,13 @@ void apply_failover(system_structure& system, const std::vector<std::string>& st
   }
 }
 
+remote::timeouts worker_limits(const run_arguments& args) {
+  remote::timeouts limits;
+  limits.connect = std::chrono::milliseconds(std::lround(args.worker_timeout * 1000));
+  limits.stall = std::chrono::milliseconds(std::lround(args.stall * 1000));
+  return limits;
+}
+
 std::vector<std::string> record_patterns(const std::vector<std::string>& values) {
   std::vector<std::string> patterns;
   for (const auto& value : values) {
@@ -208,10 +216,9 @@ int run(const run_arguments& args, const run_extension& extension) {
   options.build.log = stderr_log_sink(args.quiet ? log_level::warning : log_level::info);
   options.build.fmu_debug_logging = args.fmu_debug_log;
   options.build.threads = args.threads;
-  remote::timeouts limits;
-  limits.connect = std::chrono::milliseconds(static_cast<long>(args.worker_timeout * 1000));
   // joins the DDS domain only when a component has a worker
-  options.build.placements.push_back(std::make_shared<remote::remote_placement>(args.dds, limits));
+  options.build.placements.push_back(
+      std::make_shared<remote::remote_placement>(args.dds, worker_limits(args)));
   options.record_signals = record_patterns(args.signals);
   options.stop_when = args.stop_when;
   options.extra_records = args.extra_records;
@@ -222,6 +229,17 @@ int run(const run_arguments& args, const run_extension& extension) {
       options.record_interval = parse_duration(*args.record_interval);
     } catch (const std::exception& e) {
       throw validation_error(std::string("--record-interval: ") + e.what());
+    }
+  }
+  if (args.checkpoint_every) {
+    try {
+      options.checkpoint_every = parse_duration(*args.checkpoint_every);
+    } catch (const std::exception& e) {
+      throw validation_error(std::string("--checkpoint-every: ") + e.what());
+    }
+    if (*options.checkpoint_every <= duration::zero()) {
+      throw validation_error("--checkpoint-every: " + *args.checkpoint_every +
+                             " is not a positive number of seconds");
     }
   }
   std::optional<fs::path> system_file = args.system;
@@ -266,7 +284,14 @@ int run(const run_arguments& args, const run_extension& extension) {
       return 0;
     }
   }
-  if (system.agents.count > 0) return run_agents(std::move(system), options, args, extension);
+  if (system.agents.count > 0) {
+    if (options.checkpoint_every) {
+      throw validation_error(
+          "--checkpoint-every: a run of agents is resumed from its shared table's journal and "
+          "the learners' own checkpoints (docs/swarm.md), not from checkpoint.stride");
+    }
+    return run_agents(std::move(system), options, args, extension);
+  }
   const run_report report = run_system(std::move(system), options);
   if (!args.save_reference.empty()) {
     if (report.results_file.empty()) throw validation_error("--save-reference: nothing recorded");

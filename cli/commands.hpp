@@ -30,12 +30,14 @@ struct run_arguments {
   int threads = 1;                   ///< --threads
   std::vector<std::string> signals;  ///< --record / --signals values (see record_patterns)
   std::optional<std::string> record_interval;
-  std::vector<std::string> stop_when;    ///< --stop-when: outputs that end the run
-  bool force = false;                    ///< --force: write into a non-empty output folder
-  std::filesystem::path save_reference;  ///< --save-reference: a copy of the results CSV
-  remote::dds_settings dds;              ///< where components with a worker are looked for
-  double worker_timeout = 10;            ///< seconds to wait for a worker to appear
-  int agents = 0;                        ///< --agents: replaces the <agents> count (0: keep)
+  std::optional<std::string> checkpoint_every;  ///< --checkpoint-every: seconds of simulated time
+  std::vector<std::string> stop_when;           ///< --stop-when: outputs that end the run
+  bool force = false;                           ///< --force: write into a non-empty output folder
+  std::filesystem::path save_reference;         ///< --save-reference: a copy of the results CSV
+  remote::dds_settings dds;                     ///< where components with a worker are looked for
+  double worker_timeout = 10;                   ///< seconds to wait for a worker to appear
+  double stall = 0.2;  ///< --stall: seconds the network may hold up a reply
+  int agents = 0;      ///< --agents: replaces the <agents> count (0: keep)
   std::vector<cosim::extra_record> extra_records;  ///< recordings beside the results
   std::vector<std::string> standby;                ///< --standby: replaces the <failover> workers
   std::optional<int> snapshot_every;               ///< --snapshot-every: replaces its interval
@@ -92,6 +94,8 @@ void apply_stepping(cosim::system_structure& system, const std::optional<std::st
 /// given. \throws cosim::validation_error for an empty name, or an interval without standbys.
 void apply_failover(cosim::system_structure& system, const std::vector<std::string>& standby,
                     std::optional<int> snapshot_every);
+/// How long `stride run` waits for workers and when a held-up reply is a stall.
+remote::timeouts worker_limits(const run_arguments& args);
 int validate(const validate_arguments& args);
 
 }  // namespace stride::cli

@@ -105,6 +105,10 @@ int main(int argc, char** argv) {
   std::string record_interval;
   run->add_option("--record-interval", record_interval,
                   "Recording interval in seconds (a multiple of the base step)");
+  std::string checkpoint_every;
+  run->add_option("--checkpoint-every", checkpoint_every,
+                  "Also write checkpoint.stride every this many simulated seconds, so that a run "
+                  "whose process is killed can be continued with --resume (docs/system-xml.md)");
   bool record_view = false;
   std::string record_view_interval = stride::viewer::k_view_interval;
   run->add_flag("--record-view", record_view,
@@ -126,6 +130,12 @@ int main(int argc, char** argv) {
                   "Seconds to wait for a worker named in the system to appear")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 3600.0));
+  run->add_option("--stall", run_args.stall,
+                  "Seconds the network may hold up a worker's reply (beyond the worker's own "
+                  "time) before it is logged and counted as a stall in the manifest "
+                  "(docs/failover.md)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 60.0));
   run->add_option("--standby", run_args.standby,
                   "Standby workers, separated by commas: a lost worker's components continue on "
                   "the next one from their last state image, the results unchanged (replaces "
@@ -222,6 +232,7 @@ int main(int argc, char** argv) {
       if (!step.empty()) run_args.step = step;
       if (!algorithm.empty()) run_args.algorithm = algorithm;
       if (!record_interval.empty()) run_args.record_interval = record_interval;
+      if (!checkpoint_every.empty()) run_args.checkpoint_every = checkpoint_every;
       if (record_view) {
         // the viewer's preset: its signals at about 30 frames a second, beside the results
         stride::cosim::extra_record view_record;

@@ -67,8 +67,7 @@ int run_agents(cosim::system_structure system, cosim::run_options options,
   agents_options agents;
   agents.count = where.agents;
   agents.shared_table = where.str();
-  remote::timeouts limits;
-  limits.connect = std::chrono::milliseconds(static_cast<long>(args.worker_timeout * 1000));
+  const remote::timeouts limits = worker_limits(args);
   // every agent is a run of its own, for its workers too
   agents.placements = [&args, limits](int) {
     return std::vector<std::shared_ptr<placement_resolver>>{

@@ -387,12 +387,14 @@ run_report run_system(system_structure system, const run_options& options) {
   // the run's wall clock, told first of all observers that the simulation ended
   const auto timer = std::make_shared<wall_timer>();
   ex.add_observer(timer);
+  std::vector<std::shared_ptr<csv_recorder>> recorders;  // flushed before a checkpoint
   if (system.record.enabled) {
     report.results_file = report.output_dir / system.record.file;
     try {
       auto recorder =
           std::make_shared<csv_recorder>(report.results_file, recorded, system.record.interval);
       if (saved) recorder->continue_after(saved->time);  // the rows so far stay
+      recorders.push_back(recorder);
       ex.add_observer(std::move(recorder));
     } catch (const validation_error& e) {
       const std::string where = system.record.where.str();
@@ -404,6 +406,7 @@ run_report run_system(system_structure system, const run_options& options) {
     auto recorder = std::make_shared<csv_recorder>(report.extra_files.back(), extras[i].first,
                                                    extras[i].second);
     if (saved) recorder->continue_after(saved->time);
+    recorders.push_back(recorder);
     ex.add_observer(std::move(recorder));
   }
   if (options.progress) {
@@ -440,7 +443,21 @@ run_report run_system(system_structure system, const run_options& options) {
                                ": damaged (its time is not that of its state)");
       }
     }
-    report.result = ex.simulate_until(built.stop, options.interrupt);
+    // a checkpoint now and then: the rows up to it are on disk before it is
+    const auto save_now = [&] {
+      for (const auto& r : recorders) r->flush();
+      detail::write_checkpoint(checkpoint_file(report.output_dir), ex.current_time(),
+                               ex.save_state_bytes());
+    };
+    const auto cannot_save = [&](const std::string& why) {
+      if (options.build.log) {
+        options.build.log(log_level::warning, "stride", "",
+                          "no more checkpoints (--checkpoint-every): " + why);
+      }
+    };
+    report.result =
+        detail::simulate_saving(ex, built.stop, as_agent ? std::nullopt : options.checkpoint_every,
+                                options.interrupt, save_now, cannot_save);
     if (report.result.interrupted && !as_agent) {
       // between two steps: every component can be saved as it is now (agents are resumed
       // from their journal instead, stride/cosim/run_agents.hpp)

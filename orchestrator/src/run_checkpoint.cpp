@@ -1,5 +1,6 @@
 #include "run_checkpoint.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <fstream>
 #include <iterator>
@@ -75,6 +76,29 @@ checkpoint_data read_checkpoint(const fs::path& file) {
   c.state.assign(state.begin(), state.end());
   if (!r.at_end()) r.fail();
   return c;
+}
+
+run_result simulate_saving(execution& ex, time_point stop, std::optional<duration> every,
+                           const std::atomic<bool>* interrupt, const std::function<void()>& save,
+                           const std::function<void(const std::string&)>& failed) {
+  if (!every) return ex.simulate_until(stop, interrupt);
+  // the components are told the run's stop, not the first checkpoint's
+  if (!ex.initialized()) ex.initialize(stop);
+  const duration h = ex.base_step();
+  for (;;) {
+    // at least one step between two checkpoints
+    const time_point until = std::min(stop, ex.current_time() + std::max(*every, h));
+    const run_result r = ex.simulate_until(until, interrupt);
+    const bool over = r.interrupted || r.terminated_by_component || !r.stopped_by.empty() ||
+                      r.end_time + h > stop;
+    if (over) return r;
+    try {
+      save();
+    } catch (const std::exception& e) {
+      failed(e.what());
+      return ex.simulate_until(stop, interrupt);
+    }
+  }
 }
 
 }  // namespace stride::cosim::detail

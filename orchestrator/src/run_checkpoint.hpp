@@ -4,13 +4,17 @@
 #ifndef STRIDE_COSIM_RUN_CHECKPOINT_HPP
 #define STRIDE_COSIM_RUN_CHECKPOINT_HPP
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "stride/cosim/execution.hpp"
 #include "stride/cosim/time.hpp"
 
 namespace stride::cosim::detail {
@@ -29,6 +33,13 @@ void write_checkpoint(const std::filesystem::path& file, time_point t,
 /// \throws validation_error naming the file for a file that is not a checkpoint, is damaged, has
 /// an unknown version, or holds state images of a byte order other than this host's.
 checkpoint_data read_checkpoint(const std::filesystem::path& file);
+
+/// execution::simulate_until(stop, interrupt), calling `save` between two steps every `every` of
+/// simulated time (nullopt: never). A `save` that throws is reported to `failed` and not called
+/// again: the run goes on without checkpoints.
+run_result simulate_saving(execution& ex, time_point stop, std::optional<duration> every,
+                           const std::atomic<bool>* interrupt, const std::function<void()>& save,
+                           const std::function<void(const std::string&)>& failed);
 
 }  // namespace stride::cosim::detail
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 #include <thread>
@@ -42,6 +43,7 @@ reply_data copy_reply(const stride_remote_reply& r) {
   for (std::uint32_t i = 0; i < r.outputs._length; ++i)
     copy_values(r.outputs._buffer[i], out.outputs[i]);
   out.ended = r.ended;
+  out.busy = std::chrono::nanoseconds(r.busy_ns);
   return out;
 }
 
@@ -187,6 +189,16 @@ reply_data client::call_for(const std::string& who, dds_entity_t writer, const s
     throw cosim::component_error(where + e.what());
   }
   for (const auto& l : reply.log) forward(l);
+  if (reply.network >= limits_.stall) {
+    // a bad network, not a lost worker: the run goes on, but it is told (docs/failover.md)
+    ++stalls_;
+    char late[32];
+    std::snprintf(late, sizeof late, "%.2f", std::chrono::duration<double>(reply.network).count());
+    forward({cosim::log_level::warning, "", "network",
+             "the network held up the reply of worker '" + worker + "' to '" +
+                 to_string(static_cast<op>(r.op)) + "' for " + late +
+                 " s (a stall shorter than the lease; the run goes on unchanged)"});
+  }
   if (reply.result == status::error) throw cosim::component_error(where + reply.message);
   return reply;
 }
@@ -243,8 +255,11 @@ std::optional<reply_data> client::wait_reply(
 
 reply_data client::call(dds_entity_t writer, const std::string& worker, stride_remote_request& r) {
   const std::uint64_t seen = arrivals_.load(std::memory_order_acquire);
+  const auto sent = std::chrono::steady_clock::now();
   const std::uint64_t seq = send(writer, worker, r);
-  return *wait_reply(seq, seen, worker, std::nullopt);
+  reply_data reply = *wait_reply(seq, seen, worker, std::nullopt);
+  reply.network = std::chrono::steady_clock::now() - sent - reply.busy;
+  return reply;
 }
 
 }  // namespace stride::remote

@@ -5,6 +5,7 @@
 #define STRIDE_REMOTE_CLIENT_HPP
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -45,6 +46,8 @@ struct reply_data {
   std::vector<log_line> log;                ///< what the component logged meanwhile
   std::vector<cosim::value_block> outputs;  ///< group step: per member
   int ended = -1;                           ///< group step: the member that ended the run
+  std::chrono::nanoseconds busy{0};         ///< the worker's time serving the request
+  std::chrono::nanoseconds network{0};      ///< the rest of the round trip
 };
 
 class client {
@@ -56,6 +59,8 @@ class client {
   client& operator=(const client&) = delete;
 
   const std::string& run_id() const noexcept { return run_; }
+  /// Replies held up by the network (stalls shorter than the lease) so far.
+  long stalls() const noexcept { return stalls_.load(); }
   int domain() const noexcept { return settings_.domain; }
 
   /// Waits for `worker` to be announced and its request path to open; returns the writer to
@@ -70,6 +75,8 @@ class client {
   /// call() on behalf of a component or group (`who`, e.g. "component 'x' on worker 'w'"): the
   /// reply's log lines go to `forward`; a lost worker or an error reply becomes a
   /// cosim::component_error starting with `who` and the operation (a worker_lost for the former).
+  /// A reply the network held up for `timeouts::stall` or longer is a stall: counted, and a
+  /// warning (source "") goes to `forward`.
   reply_data call_for(const std::string& who, dds_entity_t writer, const std::string& worker,
                       stride_remote_request& r,
                       const std::function<void(const reply_data::log_line&)>& forward);
@@ -104,6 +111,7 @@ class client {
   std::map<std::uint64_t, reply_data> arrived_;
   std::set<std::uint64_t> abandoned_;       // requests no longer waited for (unanswered hellos)
   std::atomic<std::uint64_t> arrivals_{0};  // batches of replies taken so far
+  std::atomic<long> stalls_{0};
 };
 
 }  // namespace stride::remote

@@ -30,8 +30,11 @@ stride_remote_request remote_group::request(op o) {
 reply_data remote_group::call(stride_remote_request& r) {
   return link_->call_for("step group " + name_ + " on worker '" + worker_ + "'", writer_, worker_,
                          r, [this](const reply_data::log_line& l) {
+                           // a line of the group itself (a stall) goes out once
                            for (auto* m : members_) {
-                             if (m->name() == l.source) m->forward_log(l);
+                             if (m->name() == l.source || (l.source.empty() && m == members_[0])) {
+                               m->forward_log(l);
+                             }
                            }
                          });
 }

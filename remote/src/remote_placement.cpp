@@ -168,8 +168,10 @@ std::unique_ptr<cosim::component> remote_placement::create(
 }
 
 std::vector<std::pair<std::string, long>> remote_placement::events() const {
-  if (!standby_) return {};
-  return {{"failovers", standby_->failovers()}};
+  std::vector<std::pair<std::string, long>> counted;
+  if (standby_) counted.emplace_back("failovers", standby_->failovers());
+  if (link_ && link_->stalls() > 0) counted.emplace_back("stalls", link_->stalls());
+  return counted;
 }
 
 std::unique_ptr<cosim::step_group> remote_placement::create_group(

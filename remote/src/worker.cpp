@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <fstream>
 #include <map>
@@ -258,6 +259,7 @@ class host {
       end_run(run_id, "its orchestrator said so");
       return;
     }
+    const auto began = std::chrono::steady_clock::now();
     run_state& rs = run_for(run_id, info.publication_handle);
     ++rs.requests;
     stride_remote_reply reply{};
@@ -289,6 +291,9 @@ class host {
     reply.log._length = reply.log._maximum = static_cast<std::uint32_t>(lines.size());
     reply.log._buffer = lines.data();
     reply.log._release = false;
+    reply.busy_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                        std::chrono::steady_clock::now() - began)
+                        .count();
     if (const dds_return_t rc = dds_write(rs.replies.get(), &reply); rc < 0) {
       log("run " + run_id + ": the reply to request " + std::to_string(r.seq) +
           " could not be sent (DDS error " + std::to_string(rc) + ")");

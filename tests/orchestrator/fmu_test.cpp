@@ -535,6 +535,48 @@ TEST_F(cosim_fmu_test, a_run_stopped_by_a_signal_and_resumed_equals_the_uninterr
   }
 }
 
+// --checkpoint-every: a run killed outright (SIGKILL, no chance to save) goes on from its last
+// periodic checkpoint, and the results are still those of the run that was never stopped
+TEST_F(cosim_fmu_test, a_killed_run_resumes_from_its_last_periodic_checkpoint) {
+  const fs::path system = k_data / "stride_test_counting.xml";
+  const std::string run = "'" + k_cli + "' run " + quoted(system) +
+                          " --stop-time 10000 --record-interval 0.5 --quiet --output ";
+  const fs::path full = scratch.path() / "full";
+  const auto r = test::run_command(run + quoted(full), scratch.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(checkpoint_file(full)));  // none without the option
+
+  const fs::path out = scratch.path() / "killed";
+  const pid_t pid =
+      test::spawn({k_cli, "run", system.string(), "--stop-time", "10000", "--record-interval",
+                   "0.5", "--quiet", "--checkpoint-every", "250", "--output", out.string()},
+                  scratch.path() / "killed.log");
+  ASSERT_GT(pid, 0);
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(checkpoint_file(out)) && std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status))
+      << "the run ended before it was killed: " << read_text(scratch.path() / "killed.log");
+  ASSERT_TRUE(fs::exists(checkpoint_file(out)));
+  const auto resumed =
+      test::run_command("'" + k_cli + "' run --resume " + quoted(out) + " --quiet", scratch.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(read_text(out / "results.csv"), read_text(full / "results.csv"));
+  EXPECT_THAT(read_text(out / "manifest.json"), HasSubstr("\"resumed_at\": "));
+  EXPECT_FALSE(fs::exists(checkpoint_file(out)));  // finished: nothing to resume from
+
+  for (const char* bad : {"0", "-5", "soon"}) {
+    const auto b = test::run_command(
+        run + quoted(scratch.path() / "bad") + " --checkpoint-every " + bad, scratch.path());
+    EXPECT_NE(b.exit_code, 0) << bad;
+    EXPECT_THAT(b.err, HasSubstr("--checkpoint-every")) << bad;
+  }
+}
+
 #ifdef STRIDE_MINI_FMU
 // a component that cannot save its state (canGetAndSetFMUstate false): the interrupted run says
 // so and leaves no checkpoint; without ${resume} in the system nothing can be resumed, and the
@@ -573,6 +615,17 @@ TEST_F(cosim_fmu_test, a_run_whose_state_cannot_be_saved_leaves_no_checkpoint) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("holds no checkpoint of an interrupted run"));
   EXPECT_EQ(folder_contents(out), before);
+
+  // periodic checkpoints: the first attempt says why there are none, and the run goes on
+  const auto periodic = test::run_command("'" + k_cli + "' run " + quoted(system) +
+                                              " --stop-time 10 --checkpoint-every 1 --output " +
+                                              quoted(scratch.path() / "periodic"),
+                                          scratch.path());
+  EXPECT_EQ(periodic.exit_code, 0) << periodic.err;
+  const std::string warning = "no more checkpoints (--checkpoint-every): ";
+  EXPECT_THAT(periodic.err, HasSubstr(warning));
+  EXPECT_EQ(periodic.err.find(warning), periodic.err.rfind(warning));  // said once
+  EXPECT_FALSE(fs::exists(checkpoint_file(scratch.path() / "periodic")));
 }
 #endif
 

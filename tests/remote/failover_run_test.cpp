@@ -22,6 +22,7 @@ using cosim::test::quoted;
 using cosim::test::read_file;
 using cosim::test::run_command;
 using ::testing::AllOf;
+using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
 
 const std::string k_cli = STRIDE_CLI;
@@ -97,7 +98,7 @@ TEST_F(failover_run, a_worker_killed_mid_walk_is_replaced_and_the_csv_is_unchang
                                HasSubstr("continues on standby worker 's1'")));
   EXPECT_EQ(read_file(scratch.path() / "remote/results.csv"), local);  // byte for byte
   EXPECT_THAT(read_file(scratch.path() / "remote/manifest.json"),
-              AllOf(HasSubstr("\"status\": \"ok\""), HasSubstr("\"events\": {\"failovers\": 1}")));
+              AllOf(HasSubstr("\"status\": \"ok\""), ContainsRegex("\"failovers\": 1[,}]")));
   EXPECT_THAT(s1.output(), HasSubstr("loaded robot"));
 }
 
@@ -135,7 +136,7 @@ TEST_F(failover_run, two_kills_in_a_row_with_two_standbys_leave_the_csv_unchange
                                HasSubstr("continues on standby worker 's2'")));
   EXPECT_EQ(read_file(scratch.path() / "remote/results.csv"), local);
   EXPECT_THAT(read_file(scratch.path() / "remote/manifest.json"),
-              HasSubstr("\"events\": {\"failovers\": 2}"));
+              ContainsRegex("\"failovers\": 2[,}]"));
   // the system as run keeps its standbys
   EXPECT_THAT(read_file(scratch.path() / "remote/system.xml"), HasSubstr("standby=\"s1 s2\""));
 }
@@ -229,6 +230,56 @@ TEST_F(failover_run, packets_lost_on_the_way_change_nothing) {
                                    scratch.path());
   EXPECT_NE(cut_off.exit_code, 0);
   EXPECT_THAT(cut_off.err, HasSubstr("worker 'w1' did not appear"));
+}
+
+// The orchestrator itself killed (SIGKILL) mid-walk, with --checkpoint-every: `--resume`
+// continues from its last checkpoint on the same worker, and the CSV equals the in-process walk.
+TEST_F(failover_run, a_killed_orchestrator_resumes_from_its_periodic_checkpoint) {
+  const std::string local = in_process_walk();
+  auto w1 = start_worker("w1", 172);
+  ASSERT_TRUE(w1.ready()) << w1.output();
+  const fs::path out = scratch.path() / "remote";
+  const pid_t run = start_run(172, {"--quiet", "--checkpoint-every", "5"});
+  ASSERT_GT(run, 0);
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < until &&
+         !(fs::exists(out / "checkpoint.stride") && fs::file_size(out / "results.csv") > 150000)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(run, SIGKILL);
+  ASSERT_EQ(wait_exit(run), 128 + SIGKILL) << run_log();
+  ASSERT_TRUE(fs::exists(out / "checkpoint.stride"));
+  const auto resumed = run_command(
+      "'" + k_cli + "' run --resume " + quoted(out) + " --quiet --domain 172", scratch.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(read_file(out / "results.csv"), local);  // byte for byte
+}
+
+// A reply the network holds up beyond --stall is a stall: one log line each, counted in the
+// manifest. With --stall 0 every reply is one, which shows the lines and the count agree; a
+// clean loopback run has none at the default (the netns test makes a real one).
+TEST_F(failover_run, replies_held_up_by_the_network_are_logged_and_counted_as_stalls) {
+  auto w1 = start_worker("w1", 171);
+  ASSERT_TRUE(w1.ready()) << w1.output();
+  const auto every = run_command("'" + k_cli + "' run " + quoted(k_walk_on_worker) +
+                                     " --stop-time 0.2 --domain 171 --stall 0 --output " +
+                                     quoted(scratch.path() / "every"),
+                                 scratch.path());
+  ASSERT_EQ(every.exit_code, 0) << every.err;
+  const std::string line = "the network held up the reply of worker 'w1' to '";
+  std::size_t lines = 0;
+  for (auto at = every.err.find(line); at != std::string::npos; at = every.err.find(line, at + 1)) {
+    ++lines;
+  }
+  EXPECT_GE(lines, 25u);  // 25 steps, and the calls before them
+  EXPECT_THAT(every.err, HasSubstr("[robot] warning (network): " + line + "step' for "));
+  EXPECT_THAT(read_file(scratch.path() / "every/manifest.json"),
+              HasSubstr("\"stalls\": " + std::to_string(lines) + "}"));
+  const auto bad =
+      run_command("'" + k_cli + "' run " + quoted(k_walk_on_worker) + " --domain 171 --stall -1",
+                  scratch.path());
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_THAT(bad.err, HasSubstr("--stall"));
 }
 
 TEST_F(failover_run, an_fmu_that_cannot_save_its_state_is_refused_before_the_run) {

@@ -3,7 +3,8 @@
 # c (standby s1) and b (the orchestrator), all with the multi-host DDS configuration of docs/dds/
 # (unicast discovery, lease 1 s). The walk runs with the robot on w1 and --standby s1.
 #   partition: w1's link is cut for 0.5 s (shorter than the lease): nothing changes, the run does
-#              not fail over; then for 3 s: the robot fails over to s1. Both CSVs equal the
+#              not fail over, the stall is logged and counted; then for 3 s: the robot fails over
+#              to s1. Both CSVs equal the
 #              in-process walk byte for byte, and w1, back on the network, serves the next run.
 #   lossy:     every link with netem (2 ms ± 1 ms delay, 5 % loss, 1 % duplicates, reordering):
 #              the CSV equals the in-process walk. Needs the kernel's netem qdisc.
@@ -112,6 +113,11 @@ case "$mode" in
     cut 0.5
     finish_run short
     grep -q "is lost" "$work/short.log" && { cat "$work/short.log"; fail "a 0.5 s cut failed over"; }
+    # but it is told: each reply the cut held up is one line and counted
+    stalls=$(grep -c "the network held up the reply of worker 'w1'" "$work/short.log")
+    [ "$stalls" -ge 1 ] || { cat "$work/short.log"; fail "the 0.5 s cut was not logged"; }
+    grep -q "\"stalls\": $stalls}" "$work/short/manifest.json" ||
+      { cat "$work/short/manifest.json"; fail "the manifest does not count $stalls stalls"; }
     # a cut longer than the lease: the robot fails over to s1
     start_run long --standby s1
     wait_results long "$fifth"
@@ -123,7 +129,7 @@ case "$mode" in
     # w1, back on the network, is not held by the old run and serves the next one
     start_run next --quiet
     finish_run next
-    echo "PASSED: a 0.5 s cut changes nothing, a 3 s cut fails over to the standby; every CSV equals the in-process walk; the worker that came back serves the next run"
+    echo "PASSED: a 0.5 s cut changes nothing but a logged and counted stall, a 3 s cut fails over to the standby; every CSV equals the in-process walk; the worker that came back serves the next run"
     ;;
   lossy)
     for h in a b; do

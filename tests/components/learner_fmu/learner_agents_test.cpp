@@ -221,6 +221,11 @@ TEST(learner_agents, resuming_needs_the_journal_and_the_same_agents) {
       std::string(STRIDE_CLI) + " run --resume " + test::quoted(out), scratch.path());
   EXPECT_NE(no_journal.exit_code, 0);
   EXPECT_THAT(no_journal.err, ::testing::HasSubstr("shared_table.journal is missing"));
+  // periodic checkpoints of the whole system are not how agents are resumed
+  const auto periodic = test::run_command(run + "-periodic --checkpoint-every 10", scratch.path());
+  EXPECT_NE(periodic.exit_code, 0);
+  EXPECT_THAT(periodic.err, ::testing::HasSubstr("--checkpoint-every: a run of agents is resumed "
+                                                 "from its shared table's journal"));
 }
 
 }  // namespace

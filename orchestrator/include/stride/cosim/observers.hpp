@@ -52,12 +52,13 @@ class csv_recorder : public observer {
 
   const std::filesystem::path& file() const noexcept { return file_; }
   std::size_t rows_written() const noexcept { return rows_; }
+  /// Writes the buffered rows (before a checkpoint); \throws error naming the file when the
+  /// write fails.
+  void flush();
 
  private:
   void write_row(const execution& ex, time_point t);
   void keep_rows_until(time_point after, const std::string& header);
-  /// Writes the buffered rows; \throws error naming the file when the write fails.
-  void flush();
 
   std::filesystem::path file_;
   std::vector<variable_id> variables_;

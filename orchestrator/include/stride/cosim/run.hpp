@@ -71,6 +71,10 @@ struct run_options {
   /// manifest that says "interrupted" and when ("interrupted_at", seconds), and the state of every
   /// component in checkpoint_file() for `resume_dir` (e.g. set by SIGINT).
   const std::atomic<bool>* interrupt = nullptr;
+  /// Also writes checkpoint_file() every this much simulated time (the results written up to
+  /// it first), so that a run whose process is killed or whose host is lost can be resumed
+  /// from the last one with `resume_dir`. Not for agents (their shared table's journal does it).
+  std::optional<duration> checkpoint_every;
   /// Build, check and initialize everything as for the run, then end before the first step
   /// (`stride validate`): no manifest is written.
   bool initialize_only = false;

@@ -48,6 +48,9 @@ struct timeouts {
   /// how long a caller watches for its reply before it sleeps (BENCHMARKS.md: waking a sleeping
   /// thread costs about as much as the round trip itself)
   std::chrono::microseconds spin{500};
+  /// a reply the network held up this long (beyond the worker's own time) is a stall: logged
+  /// and counted; far above a repaired packet loss (tens of ms), far below the lease (1 s)
+  std::chrono::milliseconds stall{200};
 };
 
 }  // namespace stride::remote
