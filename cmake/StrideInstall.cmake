@@ -3,7 +3,7 @@
 #   P/share/stride/fmus/*.fmu        bundled components (stride_add_fmu(... INSTALL))
 #   P/share/stride/models/           robot models and example systems
 #   P/share/stride/examples/         components built against the package (docs/tutorial.md)
-#   P/include/stride/{sdk,fmi2}/     the component SDK headers
+#   P/include/stride/{sdk,fmi2,fmi3}/ the component SDK headers (and stride/common/bytes.hpp)
 #   P/lib/libstride_sdk.a, P/lib/stride/objects/  the SDK library and its two object sets
 #   P/lib/cmake/Stride/              StrideConfig.cmake, StrideConfigVersion.cmake, StrideFmu.cmake
 # An installed `stride` finds the bundled FMUs and models through its own location
@@ -30,6 +30,9 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/fmi/include/stride/sdk"
                   "${PROJECT_SOURCE_DIR}/fmi/include/stride/fmi2"
                   "${PROJECT_SOURCE_DIR}/fmi/include/stride/fmi3"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/stride")
+# the byte encoding of state images, used by the SDK's public headers
+install(FILES "${PROJECT_SOURCE_DIR}/common/include/stride/common/bytes.hpp"
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/stride/common")
 install(EXPORT StrideTargets NAMESPACE Stride:: DESTINATION "${STRIDE_INSTALL_CMAKE_DIR}")
 
 configure_package_config_file("${CMAKE_CURRENT_LIST_DIR}/StrideConfig.cmake.in"

@@ -13,13 +13,15 @@ add_library(stride_sdk STATIC
   src/lifecycle.cpp
   src/logger.cpp
   src/glue_common.cpp
+  src/buffer_model.cpp
   src/resources.cpp)
 target_include_directories(stride_sdk
   PUBLIC "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>" "$<INSTALL_INTERFACE:include>"
   PRIVATE src)
 target_link_libraries(stride_sdk PUBLIC stride_fmi_api)
-# header-only helpers used inside the sources only; BUILD_INTERFACE keeps them out of the export
-target_link_libraries(stride_sdk PRIVATE $<BUILD_INTERFACE:stride_common>)
+# header-only helpers (stride/common/bytes.hpp, used by the public state headers, is installed
+# beside the SDK's headers); BUILD_INTERFACE keeps the target out of the export
+target_link_libraries(stride_sdk PUBLIC $<BUILD_INTERFACE:stride_common>)
 # the public headers use std::span: whoever includes them compiles as C++20 at least
 target_compile_features(stride_sdk PUBLIC cxx_std_20)
 # components are shared libraries; the SDK goes into them whatever the including project sets

@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3
   clang libclang-rt-dev llvm gcovr
+  g++-s390x-linux-gnu qemu-user
   nodejs chromium
 )
 

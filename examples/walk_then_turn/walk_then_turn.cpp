@@ -22,6 +22,14 @@ struct controller_data {
   stride::sdk::time_ns now = 0;
 };
 
+// Every member, in a fixed order: what a saved state (fmi2GetFMUstate) holds, the same bytes on
+// any host. A member left out would be lost by a restore, so the SDK refuses to instantiate then.
+template <class F>
+void state_fields(controller_data& d, F&& f) {
+  f(d.forward_time, d.forward_step, d.turn_step, d.turn_rate, d.x_move, d.a_move, d.walking,
+    d.turning, d.now);
+}
+
 class walk_then_turn : public stride::sdk::model_base<controller_data> {
  public:
   explicit walk_then_turn(const stride::sdk::instance_context&) {}

@@ -2,26 +2,51 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
 
+#include "stride/common/bytes.hpp"
 #include "stride/common/text.hpp"
 #include "stride/sdk/model_description.hpp"
 
 namespace stride::sdk::glue {
 namespace {
 
-constexpr char k_state_magic[8] = {'S', 'T', 'R', 'D', 'S', 'T', 'A', '1'};
+// Format 2: the header and the component's image encoded field by field (portable). Format 1
+// copied the header struct and the data from memory; its images are refused by name.
+constexpr std::string_view k_state_magic = "STRDSTA2";
+constexpr std::string_view k_state_magic_v1 = "STRDSTA1";
 
 struct state_header {
-  char magic[8];
-  char guid[40];
-  time_ns time;
-  std::uint32_t lifecycle;
-  std::uint8_t terminate_requested;
+  std::string guid;
+  time_ns time = 0;
+  std::uint32_t lifecycle = 0;
+  bool terminate_requested = false;
 };
+
+using header_reader = common::byte_reader<std::runtime_error>;
+
+// Reads the header; the reader is left at the component's image.
+state_header read_header(header_reader& r) {
+  const auto magic = r.get_raw(k_state_magic.size());
+  if (std::memcmp(magic.data(), k_state_magic_v1.data(), magic.size()) == 0) {
+    throw std::runtime_error(
+        "an FMU state of an earlier Stride (format 1, in its host's memory layout), which this "
+        "version does not read");
+  }
+  if (std::memcmp(magic.data(), k_state_magic.data(), magic.size()) != 0) {
+    throw std::runtime_error("not a Stride FMU state");
+  }
+  state_header h;
+  h.guid = r.get_string();
+  h.time = r.get<std::int64_t>();
+  h.lifecycle = r.get<std::uint32_t>();
+  h.terminate_requested = r.get<std::uint8_t>() != 0;
+  return h;
+}
 
 template <class T>
 void write_value(char* at, const variable&, T x) {
@@ -140,40 +165,37 @@ template std::string store_value<std::string_view>(instance&, const variable&, s
                                                    std::string_view);
 
 std::vector<std::byte> serialize(instance& inst) {
-  state_header header{};
-  std::memcpy(header.magic, k_state_magic, sizeof header.magic);
-  std::strncpy(header.guid, inst.loaded.guid.c_str(), sizeof header.guid - 1);
-  header.time = inst.time;
-  header.lifecycle = inst.state;
-  header.terminate_requested = inst.terminate_requested ? 1 : 0;
-  std::vector<std::byte> body = inst.component->save_state();
-  std::vector<std::byte> bytes(sizeof header + body.size());
-  std::memcpy(bytes.data(), &header, sizeof header);
-  if (!body.empty()) std::memcpy(bytes.data() + sizeof header, body.data(), body.size());
-  return bytes;
+  common::byte_writer w;
+  w.put_raw(std::as_bytes(std::span(k_state_magic)));
+  w.put_string(inst.loaded.guid);
+  w.put(static_cast<std::int64_t>(inst.time));
+  w.put(static_cast<std::uint32_t>(inst.state));
+  w.put(static_cast<std::uint8_t>(inst.terminate_requested ? 1 : 0));
+  w.put_raw(inst.component->save_state());
+  return w.take();
 }
 
 std::string state_problem(const instance& inst, const std::byte* bytes, std::size_t size) {
-  if (bytes == nullptr || size < sizeof(state_header)) return "too short to be an FMU state";
-  state_header header;
-  std::memcpy(&header, bytes, sizeof header);
-  if (std::memcmp(header.magic, k_state_magic, sizeof header.magic) != 0) {
-    return "not a Stride FMU state";
-  }
-  if (std::strncmp(header.guid, inst.loaded.guid.c_str(), sizeof header.guid) != 0) {
-    return "state belongs to another FMU (GUID " +
-           std::string(header.guid, strnlen(header.guid, sizeof header.guid)) + ")";
+  if (bytes == nullptr) return "no FMU state";
+  header_reader r(std::span(bytes, size), "too short to be an FMU state");
+  try {
+    const state_header header = read_header(r);
+    if (header.guid != inst.loaded.guid) {
+      return "state belongs to another FMU (GUID " + header.guid + ")";
+    }
+  } catch (const std::exception& e) {
+    return e.what();
   }
   return {};
 }
 
 void restore(instance& inst, const std::vector<std::byte>& image) {
-  state_header header;
-  std::memcpy(&header, image.data(), sizeof header);
-  inst.component->restore_state(std::span<const std::byte>(image).subspan(sizeof(state_header)));
+  header_reader r(image, "too short to be an FMU state");
+  const state_header header = read_header(r);
+  inst.component->restore_state(r.get_rest());
   inst.time = header.time;
   inst.state = header.lifecycle;
-  inst.terminate_requested = header.terminate_requested != 0;
+  inst.terminate_requested = header.terminate_requested;
   inst.values_dirty = true;
 }
 

@@ -157,7 +157,10 @@ variable_table buffer_table_builder::finish() {
   auto bytes = std::make_shared<std::vector<std::byte>>(std::move(defaults_));
   const std::size_t size = bytes->size();
   const void* start = bytes->data();
-  return table_builder_base::finish(std::shared_ptr<const void>(std::move(bytes), start), size);
+  variable_table table =
+      table_builder_base::finish(std::shared_ptr<const void>(std::move(bytes), start), size);
+  table.storage_ = std::move(storage_);
+  return table;
 }
 
 }  // namespace stride::sdk

@@ -321,8 +321,39 @@ void execution::restore_state(const execution_state& s) {
 }
 
 namespace {
+
 constexpr std::string_view k_state_magic = "stride execution state 1";
+
+struct parsed_state {
+  std::int64_t steps = 0;
+  std::vector<saved_component> components;
+  std::vector<std::byte> algorithm;
+};
+
+parsed_state parse_state(std::span<const std::byte> bytes) {
+  detail::byte_reader r(bytes, "saved execution state");
+  if (r.get_string() != k_state_magic) {
+    throw validation_error("saved execution state: not a state written by this version");
+  }
+  parsed_state s;
+  s.steps = r.get<std::int64_t>();
+  s.components.resize(r.get_size(2 * sizeof(std::uint64_t)));  // two lengths each at least
+  for (saved_component& c : s.components) {
+    c.name = r.get_string();
+    const auto b = r.get_bytes();
+    c.image.assign(b.begin(), b.end());
+  }
+  const auto algorithm = r.get_bytes();
+  s.algorithm.assign(algorithm.begin(), algorithm.end());
+  if (!r.at_end()) r.fail();
+  return s;
+}
+
 }  // namespace
+
+std::vector<saved_component> saved_components(std::span<const std::byte> state_bytes) {
+  return parse_state(state_bytes).components;
+}
 
 std::vector<std::byte> execution::save_state_bytes() const {
   const execution_state s = save_state();
@@ -339,28 +370,22 @@ std::vector<std::byte> execution::save_state_bytes() const {
 }
 
 void execution::restore_state_bytes(std::span<const std::byte> bytes) {
-  detail::byte_reader r(bytes, "saved execution state");
-  if (r.get_string() != k_state_magic) {
-    throw validation_error("saved execution state: not a state written by this version");
-  }
-  execution_state s;
-  s.steps = r.get<std::int64_t>();
-  const std::size_t n = r.get_size();
-  if (n != components_.size()) {
-    throw validation_error("saved execution state: " + std::to_string(n) +
+  parsed_state saved = parse_state(bytes);
+  if (saved.components.size() != components_.size()) {
+    throw validation_error("saved execution state: " + std::to_string(saved.components.size()) +
                            " components, the system has " + std::to_string(components_.size()));
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::string name = r.get_string();
-    if (name != components_[i]->name()) {
+  execution_state s;
+  s.steps = saved.steps;
+  for (std::size_t i = 0; i < components_.size(); ++i) {
+    if (saved.components[i].name != components_[i]->name()) {
       throw validation_error("saved execution state: component " + std::to_string(i + 1) + " is '" +
-                             name + "', in the system '" + components_[i]->name() + "'");
+                             saved.components[i].name + "', in the system '" +
+                             components_[i]->name() + "'");
     }
-    const auto b = r.get_bytes();
-    s.components.emplace_back(b.begin(), b.end());
+    s.components.push_back(std::move(saved.components[i].image));
   }
-  s.algorithm = algo_->state_from_bytes(r.get_bytes());
-  if (!r.at_end()) r.fail();
+  s.algorithm = algo_->state_from_bytes(saved.algorithm);
   restore_state(s);
 }
 

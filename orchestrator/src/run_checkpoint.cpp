@@ -29,13 +29,52 @@ std::string order_name(byte_order o) {
   return o == byte_order::big ? "big-endian" : "little-endian";
 }
 
+// The state image of a component built with Stride's SDK (format 2) reads the same on every
+// host; any other FMU's image is its own, in the byte order of the host that wrote it.
+bool portable_image(std::span<const std::byte> image) {
+  constexpr std::string_view k_sdk_state = "STRDSTA2";
+  return image.size() >= k_sdk_state.size() &&
+         std::equal(k_sdk_state.begin(), k_sdk_state.end(), image.begin(),
+                    [](char c, std::byte b) { return static_cast<std::byte>(c) == b; });
+}
+
+// Another host's checkpoint: its images must all be portable.
+void require_portable_images(const fs::path& file, byte_order order,
+                             std::span<const std::byte> state) {
+  for (const saved_component& c : saved_components(state)) {
+    if (!portable_image(c.image)) {
+      throw validation_error(file.string() + ": written on a " + order_name(order) +
+                             " host, and the state of component '" + c.name +
+                             "' is in its FMU's own format, in that host's byte order (this host "
+                             "is " +
+                             order_name(host_order()) +
+                             "; only the states of Stride's components are portable, "
+                             "docs/checkpoint-format.md)");
+    }
+  }
+}
+
+[[noreturn]] void refuse_version(const fs::path& file, std::uint32_t version) {
+  if (version < k_checkpoint_version) {
+    throw validation_error(file.string() + ": checkpoint version " + std::to_string(version) +
+                           " was written by an earlier stride, whose components saved their "
+                           "state in their host's memory layout; this stride reads version " +
+                           std::to_string(k_checkpoint_version) +
+                           " only: run again, or resume with the stride that wrote it "
+                           "(docs/checkpoint-format.md)");
+  }
+  throw validation_error(file.string() + ": checkpoint version " + std::to_string(version) +
+                         " is unknown: this stride reads version " +
+                         std::to_string(k_checkpoint_version) + " (docs/checkpoint-format.md)");
+}
+
 }  // namespace
 
 void write_checkpoint(const fs::path& file, time_point t, std::span<const std::byte> state) {
   byte_writer w;
   w.put_string(std::string(k_magic));
   w.put(k_checkpoint_version);
-  // the components' images are theirs: an FMU writes its state in its host's byte order
+  // Stride's components write portable images; any other FMU's is in this host's byte order
   w.put(host_order());
   w.put(static_cast<std::int64_t>(t.time_since_epoch().count()));
   w.put_bytes(state);
@@ -51,30 +90,18 @@ checkpoint_data read_checkpoint(const fs::path& file) {
   const auto bytes = std::as_bytes(std::span(text.data(), text.size()));
   byte_reader r(bytes, file.string());
   const std::string magic = r.get_string();
-  if (magic != k_magic && magic != k_magic_v1) {
-    throw validation_error(file.string() + ": not a checkpoint of stride");
-  }
-  if (magic == k_magic) {
-    const auto version = r.get<std::uint32_t>();
-    if (version != k_checkpoint_version) {
-      throw validation_error(file.string() + ": checkpoint version " + std::to_string(version) +
-                             " is unknown: this stride reads versions 1 to " +
-                             std::to_string(k_checkpoint_version) + " (docs/checkpoint-format.md)");
-    }
-    const auto order = r.get<byte_order>();
-    if (order != byte_order::little && order != byte_order::big) r.fail();
-    if (order != host_order()) {
-      throw validation_error(file.string() + ": written on a " + order_name(order) +
-                             " host; the components' state images in it are in that byte order, "
-                             "this host is " +
-                             order_name(host_order()) + " (docs/checkpoint-format.md)");
-    }
-  }
+  if (magic == k_magic_v1) refuse_version(file, 1);
+  if (magic != k_magic) throw validation_error(file.string() + ": not a checkpoint of stride");
+  const auto version = r.get<std::uint32_t>();
+  if (version != k_checkpoint_version) refuse_version(file, version);
+  const auto order = r.get<byte_order>();
+  if (order != byte_order::little && order != byte_order::big) r.fail();
   checkpoint_data c;
   c.time = time_point(duration(r.get<std::int64_t>()));
   const auto state = r.get_bytes();
   c.state.assign(state.begin(), state.end());
   if (!r.at_end()) r.fail();
+  if (order != host_order()) require_portable_images(file, order, c.state);
   return c;
 }
 

@@ -1,6 +1,6 @@
 // The checkpoint file of an interrupted run (`checkpoint.stride`, docs/checkpoint-format.md):
 // versioned, its numbers little-endian on every host, with the byte order of the machine whose
-// components wrote the state images inside.
+// components wrote the state images inside (those of Stride's components are portable).
 #ifndef STRIDE_COSIM_RUN_CHECKPOINT_HPP
 #define STRIDE_COSIM_RUN_CHECKPOINT_HPP
 
@@ -19,8 +19,9 @@
 
 namespace stride::cosim::detail {
 
-/// The version this build writes; it reads every version up to it.
-inline constexpr std::uint32_t k_checkpoint_version = 2;
+/// The version this build writes and reads (the earlier ones held components' images in their
+/// host's memory layout).
+inline constexpr std::uint32_t k_checkpoint_version = 3;
 
 struct checkpoint_data {
   time_point time{};
@@ -31,7 +32,8 @@ struct checkpoint_data {
 void write_checkpoint(const std::filesystem::path& file, time_point t,
                       std::span<const std::byte> state);
 /// \throws validation_error naming the file for a file that is not a checkpoint, is damaged, has
-/// an unknown version, or holds state images of a byte order other than this host's.
+/// another version, or comes from a host of the other byte order with a component image that is
+/// not portable (not of a Stride component).
 checkpoint_data read_checkpoint(const std::filesystem::path& file);
 
 /// execution::simulate_until(stop, interrupt), calling `save` between two steps every `every` of

@@ -1,11 +1,14 @@
-// A checkpoint written elsewhere (docs/checkpoint-format.md): the run folder in data/checkpoint-v2
+// A checkpoint written elsewhere (docs/checkpoint-format.md): the run folder in data/checkpoint-v3
 // was interrupted by SIGINT on another machine, in another folder, and is checked in. Resumed
-// here, in a folder of its own, it ends where a run that was never stopped ends. A checkpoint of
-// an unknown version, or with state images of the other byte order, is refused naming why; one
-// of version 1 is still read. The fixture holds state images of the stride_test FMU: when its
-// variables or data change (a new GUID or layout), make it again: run stride_test_counting.xml
-// with --stop-time 10000 --record-interval 0.5, SIGINT it, keep the header and first rows of
-// results.csv, set stop="1000" in system.xml, and set k_checkpoint_time to "interrupted_at".
+// here, in a folder of its own, it ends where a run that was never stopped ends; marked as
+// written on a big-endian host it resumes the same, since the images of Stride's components are
+// portable. An earlier or unknown version, a non-portable image from a host of the other byte
+// order and a damaged file are refused naming why. The fixture holds state images of the
+// stride_test FMU: when its variables or data change (a new GUID or field list), make it again:
+// run stride_test_counting.xml with --stop-time 10000 --record-interval 0.5, SIGINT it before
+// t = 1000 s, keep the header and first rows of results.csv, set stop="1000" in system.xml and
+// stop_time in manifest.json, name files without their folders in manifest.json, and set
+// k_checkpoint_time to its "interrupted_at".
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -25,11 +28,12 @@ using ::testing::HasSubstr;
 
 const std::string k_cli = STRIDE_CLI;
 const fs::path k_data = STRIDE_TEST_DATA_DIR;
-const fs::path k_fixture = k_data / "checkpoint-v2";
-constexpr double k_checkpoint_time = 958.73;  // the fixture's "interrupted_at"
+const fs::path k_fixture = k_data / "checkpoint-v3";
+constexpr double k_checkpoint_time = 858.84;  // the fixture's "interrupted_at"
 
 // byte offsets in the fixture's checkpoint: the magic's length (8) and text (21), then these
 constexpr std::size_t k_version_at = 29, k_order_at = 33, k_time_at = 34;
+const std::string k_big_endian("\x01", 1);
 
 class checkpoint_fixture : public ::testing::Test {
  protected:
@@ -75,41 +79,61 @@ TEST_F(checkpoint_fixture, a_checkpoint_from_another_machine_resumes_to_the_unin
           " --stop-time 1000 --record-interval 0.5 --quiet --output " + quoted(full),
       scratch.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string expected = rows_after(read_file(full / "results.csv"), k_checkpoint_time);
+  ASSERT_FALSE(expected.empty());
+
   const fs::path dir = copy_of_fixture("run");
   const auto resumed = resume(dir);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  const std::string expected = rows_after(read_file(full / "results.csv"), k_checkpoint_time);
-  ASSERT_FALSE(expected.empty());
   EXPECT_EQ(rows_after(read_file(dir / "results.csv"), k_checkpoint_time), expected);
   EXPECT_THAT(read_file(dir / "manifest.json"), HasSubstr("\"status\": \"ok\""));
 
+  // what a big-endian host writes: the same bytes but for the byte-order field
+  const fs::path big = copy_of_fixture("big");
+  patch(big / "checkpoint.stride", k_order_at, k_big_endian);
+  const auto from_big = resume(big);
+  ASSERT_EQ(from_big.exit_code, 0) << from_big.err;
+  EXPECT_EQ(rows_after(read_file(big / "results.csv"), k_checkpoint_time), expected);
+}
+
+TEST_F(checkpoint_fixture, another_version_a_foreign_image_or_damage_is_refused_naming_it) {
+  const auto refused = [&](const std::string& name, std::size_t at, const std::string& bytes) {
+    const fs::path dir = copy_of_fixture(name);
+    patch(dir / "checkpoint.stride", at, bytes);
+    const auto r = resume(dir);
+    EXPECT_NE(r.exit_code, 0) << name;
+    return r.err;
+  };
+  EXPECT_THAT(refused("future", k_version_at, std::string("\x07\0\0\0", 4)),
+              HasSubstr("checkpoint.stride: checkpoint version 7 is unknown: this stride reads "
+                        "version 3"));
+  EXPECT_THAT(refused("earlier", k_version_at, std::string("\x02\0\0\0", 4)),
+              HasSubstr("checkpoint.stride: checkpoint version 2 was written by an earlier "
+                        "stride, whose components saved their state in their host's memory "
+                        "layout"));
+
   // version 1: the version in the magic, no byte-order field
+  const std::string bytes = read_file(k_fixture / "checkpoint.stride");
   const fs::path v1 = copy_of_fixture("v1");
-  const std::string v2 = read_file(k_fixture / "checkpoint.stride");
-  std::string magic = "stride run checkpoint 1";
+  const std::string magic = "stride run checkpoint 1";
   std::string length(8, '\0');
   length[0] = static_cast<char>(magic.size());
   std::ofstream(v1 / "checkpoint.stride", std::ios::binary | std::ios::trunc)
-      << length + magic + v2.substr(k_time_at);
+      << length + magic + bytes.substr(k_time_at);
   const auto old = resume(v1);
-  ASSERT_EQ(old.exit_code, 0) << old.err;
-  EXPECT_EQ(rows_after(read_file(v1 / "results.csv"), k_checkpoint_time), expected);
-}
+  EXPECT_NE(old.exit_code, 0);
+  EXPECT_THAT(old.err, HasSubstr("checkpoint version 1 was written by an earlier stride"));
 
-TEST_F(checkpoint_fixture, an_unknown_version_or_the_other_byte_order_is_refused_naming_it) {
-  const fs::path future = copy_of_fixture("future");
-  patch(future / "checkpoint.stride", k_version_at, std::string("\x07\0\0\0", 4));
-  const auto r = resume(future);
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_THAT(r.err, HasSubstr("checkpoint.stride: checkpoint version 7 is unknown: this stride "
-                               "reads versions 1 to 2"));
-
-  const fs::path big = copy_of_fixture("big");
-  patch(big / "checkpoint.stride", k_order_at, std::string("\x01", 1));
-  const auto b = resume(big);
-  EXPECT_NE(b.exit_code, 0);
-  EXPECT_THAT(b.err, HasSubstr("written on a big-endian host; the components' state images in it "
-                               "are in that byte order, this host is little-endian"));
+  // an image that is not a Stride component's, from a host of the other byte order
+  const std::size_t image_at = bytes.find("STRDSTA2");
+  ASSERT_NE(image_at, std::string::npos);
+  const fs::path foreign = copy_of_fixture("foreign");
+  patch(foreign / "checkpoint.stride", image_at, "OTHERFMU");
+  patch(foreign / "checkpoint.stride", k_order_at, k_big_endian);
+  const auto f = resume(foreign);
+  EXPECT_NE(f.exit_code, 0);
+  EXPECT_THAT(f.err, HasSubstr("written on a big-endian host, and the state of component 'a' is "
+                               "in its FMU's own format, in that host's byte order"));
 
   const fs::path cut = copy_of_fixture("cut");
   fs::resize_file(cut / "checkpoint.stride", 100);

@@ -54,6 +54,14 @@ struct gait_data {
   std::uint32_t params_set_explicitly = 0;  // bit i: walking_param_table()[i] came from fmi2Set
 };
 
+template <class F>
+void state_fields(gait_data& d, F&& f) {
+  f(d.x_move, d.y_move, d.a_move, d.aim_on, d.balance_on, d.walking, d.gyro_fb, d.gyro_rl,
+    d.restart, d.params, d.config_file, d.ik_mode, d.webots_scaling, d.servo_count, d.joint_angle,
+    d.phase, d.footsteps, d.is_walking, d.generator, d.was_walking, d.applied_restart,
+    d.warned_step_remainder, d.params_set_explicitly);
+}
+
 double clamp_unit(double v) {
   return std::clamp(v, -1.0, 1.0);
 }

@@ -21,7 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr char k_magic[8] = {'S', 'T', 'R', 'L', 'C', 'K', 'P', '1'};
+// format 2: the session state encoded field by field (format 1 copied it from memory)
+constexpr char k_magic[8] = {'S', 'T', 'R', 'L', 'C', 'K', 'P', '2'};
+constexpr char k_magic_v1[8] = {'S', 'T', 'R', 'L', 'C', 'K', 'P', '1'};
 
 std::string errno_text() {
   return std::strerror(errno);
@@ -59,9 +61,9 @@ std::string csv_values(const state_grid& grid, std::size_t s) {
 
 }  // namespace
 
-void write_checkpoint(const fs::path& file, const checkpoint& c) {
+std::vector<std::byte> checkpoint_bytes(const checkpoint& c) {
   common::byte_writer w;
-  for (char ch : k_magic) w.put(ch);
+  w.put_raw(std::as_bytes(std::span(k_magic)));
   w.put_string(c.config);
   w.put_bytes(c.state);
   w.put(static_cast<std::uint64_t>(c.values.size()));
@@ -88,23 +90,20 @@ void write_checkpoint(const fs::path& file, const checkpoint& c) {
     w.put(sh.merged_updates);
     w.put(sh.snapshots_written);
   }
-  try {
-    common::write_file_atomically(
-        file, std::string_view(reinterpret_cast<const char*>(w.bytes().data()), w.bytes().size()));
-  } catch (const std::runtime_error& e) {
-    throw learner_error(e.what());
-  }
+  return w.take();
 }
 
-checkpoint read_checkpoint(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw learner_error(file.string() + ": cannot read the checkpoint");
-  std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::span bytes(reinterpret_cast<const std::byte*>(raw.data()), raw.size());
-  if (bytes.size() < sizeof k_magic || std::memcmp(bytes.data(), k_magic, sizeof k_magic) != 0) {
-    throw learner_error(file.string() + ": not a learner checkpoint");
+checkpoint checkpoint_from_bytes(std::span<const std::byte> bytes, const std::string& what) {
+  if (bytes.size() >= sizeof k_magic &&
+      std::memcmp(bytes.data(), k_magic_v1, sizeof k_magic_v1) == 0) {
+    throw learner_error(what +
+                        ": a checkpoint of an earlier Stride (format 1, its state in its host's "
+                        "memory layout), which this version does not read; start the run again");
   }
-  byte_reader r(bytes.subspan(sizeof k_magic), file.string() + ": checkpoint is truncated");
+  if (bytes.size() < sizeof k_magic || std::memcmp(bytes.data(), k_magic, sizeof k_magic) != 0) {
+    throw learner_error(what + ": not a learner checkpoint");
+  }
+  byte_reader r(bytes.subspan(sizeof k_magic), what + ": checkpoint is truncated");
   checkpoint c;
   c.config = r.get_string();
   const auto state = r.get_bytes();
@@ -140,8 +139,25 @@ checkpoint read_checkpoint(const fs::path& file) {
     sh.snapshots_written = r.get<std::uint64_t>();
     c.shared = std::move(sh);
   }
-  if (!r.at_end()) throw learner_error(file.string() + ": trailing bytes after the checkpoint");
+  if (!r.at_end()) throw learner_error(what + ": trailing bytes after the checkpoint");
   return c;
+}
+
+void write_checkpoint(const fs::path& file, const checkpoint& c) {
+  const std::vector<std::byte> bytes = checkpoint_bytes(c);
+  try {
+    common::write_file_atomically(
+        file, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  } catch (const std::runtime_error& e) {
+    throw learner_error(e.what());
+  }
+}
+
+checkpoint read_checkpoint(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw learner_error(file.string() + ": cannot read the checkpoint");
+  std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return checkpoint_from_bytes(std::as_bytes(std::span(raw)), file.string());
 }
 
 void check_checkpoint_config(const std::string& saved, const std::string& current,

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "shared_values.hpp"
+#include "stride/common/bytes.hpp"
 #include "stride/learner/artefacts.hpp"
 #include "stride/learner/session.hpp"
 #include "stride/sdk/fmu.hpp"
@@ -107,6 +108,19 @@ struct learner_data {
   bool finalized = false;
   std::uint32_t set_explicitly = 0;  // bit i: k_protocol_settings[i] came from fmi2Set
 };
+
+template <class F>
+void state_fields(learner_data& d, F&& f) {
+  f(d.base_x, d.base_y, d.fallen, d.footsteps, d.grid, d.mode, d.protocol, d.eval_point, d.alpha,
+    d.gamma, d.lambda, d.epsilon, d.steps_per_episode, d.max_falls, d.footsteps_per_step,
+    d.settle_footsteps, d.k1, d.k2, d.negative_reward, d.speed_cap, d.capped_reward,
+    d.initial_value, d.seed, d.total_steps, d.step_timeout, d.stand_time, d.balance, d.output_dir,
+    d.resume, d.snapshot_steps, d.shared_table, d.agent, d.path_every, d.log_steps, d.log_progress,
+    d.progress_interval);
+  f(d.value, d.reset_robot, d.walking, d.balance_on, d.episode, d.rl_step, d.step_in_episode,
+    d.falls_in_episode, d.total_falls, d.state_index, d.last_reward, d.last_speed, d.episode_reward,
+    d.state_value, d.sum_abs_dv, d.progress, d.session, d.started, d.finalized, d.set_explicitly);
+}
 
 // The settings whose defaults the protocol chooses: explicit sets win over the protocol.
 struct protocol_setting {
@@ -438,121 +452,52 @@ class learner_model : public sdk::model_base<learner_data> {
     writer_.close();
   }
 
-  // state = the data struct, then V and the traces, then the sizes of the logs (so that a
-  // restored state continues them from its own moment, e.g. a run resumed by stride)
+  // state = the data's fields, then V, the traces and the sizes of the logs (so that a restored
+  // state continues them from its own moment, e.g. a run resumed by stride) as in a checkpoint,
+  // with an agent's place in the shared rounds
   std::vector<std::byte> save_state() const override {
-    std::vector<std::byte> bytes = sdk::model_base<learner_data>::save_state();
-    const auto put = [&bytes](const void* p, std::size_t n) {
-      const auto* b = static_cast<const std::byte*>(p);
-      bytes.insert(bytes.end(), b, b + n);
-    };
-    const std::uint64_t nv = values_.size(), nt = traces_.entries.size();
-    put(&nv, sizeof nv);
-    put(values_.values().data(), nv * sizeof(double));
-    put(&nt, sizeof nt);
-    for (const auto& e : traces_.entries) {
-      const std::uint64_t s = e.state;
-      put(&s, sizeof s);
-      put(&e.z, sizeof e.z);
-      put(&e.v_start, sizeof e.v_start);
-    }
-    const auto sizes = writer_.active() ? writer_.flush() : std::map<std::string, std::uint64_t>{};
-    const std::uint64_t nf = sizes.size();
-    put(&nf, sizeof nf);
-    for (const auto& [name, size] : sizes) {
-      const std::uint64_t n = name.size();
-      put(&n, sizeof n);
-      put(name.data(), name.size());
-      put(&size, sizeof size);
-    }
-    // an agent sharing V: where it is in the rounds, so that a restored copy can rejoin them
-    const std::uint64_t shares = shared_ ? 1 : 0;
-    put(&shares, sizeof shares);
-    if (shared_) {
-      const shared_checkpoint sh = shared_place();
-      const std::uint64_t ne = sh.entries.size();
-      put(&sh.round, sizeof sh.round);
-      put(&sh.merged_updates, sizeof sh.merged_updates);
-      put(&ne, sizeof ne);
-      put(sh.entries.data(), ne * sizeof(std::uint32_t));
-      put(sh.increments.data(), ne * sizeof(double));
-    }
-    return bytes;
+    common::byte_writer w;
+    sdk::put_state(w, data_);
+    checkpoint rest;
+    rest.values = values_.values();
+    rest.traces = traces_.entries;
+    if (writer_.active()) rest.file_sizes = writer_.flush();
+    if (shared_) rest.shared = shared_place();
+    w.put_bytes(checkpoint_bytes(rest));
+    return w.take();
   }
 
   void restore_state(std::span<const std::byte> bytes) override {
-    if (bytes.size() < sizeof(learner_data) + 16)
-      throw sdk::model_error("learner state is too short");
-    std::size_t pos = sizeof(learner_data);
-    const auto get = [&](void* p, std::size_t n) {
-      if (n > bytes.size() - pos) throw sdk::model_error("learner state is truncated");
-      std::memcpy(p, bytes.data() + pos, n);
-      pos += n;
-    };
-    std::uint64_t nv = 0;
-    get(&nv, sizeof nv);
-    if (data_.started && nv != values_.size()) {
-      throw sdk::model_error("learner state has " + std::to_string(nv) + " values, the grid " +
-                             std::to_string(values_.size()));
+    sdk::state_reader r(bytes);
+    learner_data restored = data_;
+    sdk::get_state(r, restored);
+    const auto tail = r.get_bytes();
+    r.require_end();
+    checkpoint rest;
+    try {
+      rest = checkpoint_from_bytes(tail, "learner state");
+    } catch (const learner_error& e) {
+      throw sdk::model_error(e.what());
     }
-    std::vector<double> v(nv);
-    get(v.data(), nv * sizeof(double));
-    std::uint64_t nt = 0;
-    get(&nt, sizeof nt);
-    eligibility_traces z;
-    for (std::uint64_t i = 0; i < nt; ++i) {
-      std::uint64_t s = 0;
-      eligibility_traces::entry e;
-      get(&s, sizeof s);
-      get(&e.z, sizeof e.z);
-      get(&e.v_start, sizeof e.v_start);
-      e.state = static_cast<std::size_t>(s);
-      z.entries.push_back(e);
-    }
-    std::uint64_t nf = 0;
-    get(&nf, sizeof nf);
-    std::map<std::string, std::uint64_t> sizes;
-    for (std::uint64_t i = 0; i < nf; ++i) {
-      std::uint64_t n = 0;
-      get(&n, sizeof n);
-      if (n > bytes.size() - pos) throw sdk::model_error("learner state is truncated");
-      std::string name(n, '\0');
-      get(name.data(), n);
-      get(&sizes[name], sizeof(std::uint64_t));
-    }
-    std::uint64_t shares = 0;
-    get(&shares, sizeof shares);
-    std::optional<shared_checkpoint> place;
-    if (shares != 0) {
-      shared_checkpoint sh;
-      std::uint64_t ne = 0;
-      get(&sh.round, sizeof sh.round);
-      get(&sh.merged_updates, sizeof sh.merged_updates);
-      get(&ne, sizeof ne);
-      if (ne > (bytes.size() - pos) / (sizeof(std::uint32_t) + sizeof(double))) {
-        throw sdk::model_error("learner state is truncated");
+    if (data_.started) {
+      if (rest.values.size() != values_.size()) {
+        throw sdk::model_error("learner state has " + std::to_string(rest.values.size()) +
+                               " values, the grid " + std::to_string(values_.size()));
       }
-      sh.entries.resize(ne);
-      sh.increments.resize(ne);
-      get(sh.entries.data(), ne * sizeof(std::uint32_t));
-      get(sh.increments.data(), ne * sizeof(double));
-      place = std::move(sh);
-    }
-    if (pos != bytes.size()) throw sdk::model_error("learner state has trailing bytes");
-    if (data_.started && place.has_value() != (shared_ != nullptr)) {
-      throw sdk::model_error(place ? "learner state is of an agent sharing V, this learner does not"
+      if (rest.shared.has_value() != (shared_ != nullptr)) {
+        throw sdk::model_error(rest.shared
+                                   ? "learner state is of an agent sharing V, this learner does not"
                                    : "learner state is of a learner with V of its own, this one "
                                      "shares V");
-    }
-    const bool was_started = data_.started;
-    sdk::model_base<learner_data>::restore_state(bytes.first(sizeof(learner_data)));
-    if (data_.started && !was_started) {
+      }
+    } else if (restored.started) {
       throw sdk::model_error("learner state from an initialized instance needs initialization");
     }
-    values_.values() = std::move(v);
-    traces_ = std::move(z);
-    if (writer_.active() && !sizes.empty()) writer_.cut_back(sizes);
-    if (shared_ && place) rejoin_shared_table(*place);
+    data_ = restored;
+    values_.values() = std::move(rest.values);
+    traces_.entries = std::move(rest.traces);
+    if (writer_.active() && !rest.file_sizes.empty()) writer_.cut_back(rest.file_sizes);
+    if (shared_ && rest.shared) rejoin_shared_table(*rest.shared);
   }
 
  private:
@@ -667,10 +612,14 @@ class learner_model : public sdk::model_base<learner_data> {
 
   void restore_checkpoint(const checkpoint& ck, const fs::path& file) {
     check_checkpoint_config(ck.config, config_.canonical(), file);
-    if (ck.state.size() != sizeof(session_state) || ck.values.size() != values_.size()) {
-      throw sdk::model_error(file.string() + ": checkpoint does not fit this learner build/grid");
+    if (ck.values.size() != values_.size()) {
+      throw sdk::model_error(file.string() + ": checkpoint does not fit this learner's grid");
     }
-    std::memcpy(&data_.session, ck.state.data(), sizeof(session_state));
+    sdk::state_reader r(ck.state);
+    session_state session;
+    sdk::get_state(r, session);
+    r.require_end();
+    data_.session = session;
     values_.values() = ck.values;
     traces_.entries = ck.traces;
   }
@@ -687,8 +636,9 @@ class learner_model : public sdk::model_base<learner_data> {
       writer_.episode(e);
       checkpoint ck;
       ck.config = config_.canonical();
-      const auto* p = reinterpret_cast<const std::byte*>(&data_.session);
-      ck.state.assign(p, p + sizeof(session_state));
+      common::byte_writer session;
+      sdk::put_state(session, data_.session);
+      ck.state = session.take();
       ck.values = values_.values();
       ck.traces = traces_.entries;
       ck.file_sizes = writer_.flush();

@@ -286,21 +286,21 @@ class plant_model final : public sdk::buffer_model {
     return sdk::step_result::ok;
   }
 
-  // state = the value buffer followed by the plant's own image (empty before initialization)
+  // state = the values followed by the plant's own image (none before initialization)
   std::vector<std::byte> save_state() const override {
-    std::vector<std::byte> bytes = sdk::buffer_model::save_state();
+    common::byte_writer w;
+    save_buffer(w);
     if (sim_) {
       const std::vector<std::uint8_t> image = sim_->save_state();
-      const auto* begin = reinterpret_cast<const std::byte*>(image.data());
-      bytes.insert(bytes.end(), begin, begin + image.size());
+      w.put_raw(std::as_bytes(std::span(image)));
     }
-    return bytes;
+    return w.take();
   }
 
   void restore_state(std::span<const std::byte> bytes) override {
-    if (bytes.size() < data_size()) throw sdk::model_error("plant state is too short");
-    sdk::buffer_model::restore_state(bytes.first(data_size()));
-    const auto image = bytes.subspan(data_size());
+    sdk::state_reader r(bytes);
+    restore_buffer(r);
+    const auto image = r.get_rest();
     if (image.empty()) {
       sim_.reset();
       return;

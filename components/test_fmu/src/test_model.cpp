@@ -27,6 +27,12 @@ struct test_data {
   double vec_out[3] = {0.0, 0.0, 0.0};
 };
 
+template <class F>
+void state_fields(test_data& d, F&& f) {
+  f(d.gain, d.offset, d.u, d.y, d.integral, d.n, d.counter, d.enable, d.active, d.label, d.suffix,
+    d.echo, d.stop_after_steps, d.fail_at_step, d.vec_in, d.vec_out);
+}
+
 class test_model : public sdk::model_base<test_data> {
  public:
   explicit test_model(const sdk::instance_context& context) : context_(context) {}

@@ -619,6 +619,11 @@ TEST(learner_checkpoint, round_trip_and_configuration_check) {
   std::ofstream(dir / "other.bin") << "hello world";
   EXPECT_THAT(error_of([&] { read_checkpoint(dir / "other.bin"); }),
               HasSubstr("not a learner checkpoint"));
+  // the earlier format copied the session state from memory: refused by name
+  std::vector<std::byte> earlier = checkpoint_bytes(c);
+  earlier[7] = std::byte{'1'};
+  EXPECT_THAT(error_of([&] { checkpoint_from_bytes(earlier, "old.bin"); }),
+              HasSubstr("old.bin: a checkpoint of an earlier Stride (format 1"));
   fs::remove_all(dir);
 }
 

@@ -1,7 +1,9 @@
 // FMU state: get/set and serialisation restore the continuation bit-exactly.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "fmi_harness.hpp"
@@ -71,6 +73,58 @@ TEST(fmu_state, foreign_bytes_and_handles_are_rejected) {
   int not_a_state = 0;
   EXPECT_EQ(fmi2SetFMUstate(h.c(), &not_a_state), fmi2Error);
   EXPECT_TRUE(h.logged("unknown FMUstate"));
+}
+
+// little-endian number of `n` bytes at `p`
+std::uint64_t little_endian(const fmi2Byte* p, int n) {
+  std::uint64_t v = 0;
+  for (int i = n - 1; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(p[i]);
+  return v;
+}
+
+std::vector<fmi2Byte> serialized(fmi_harness& h) {
+  fmi2FMUstate state = nullptr;
+  EXPECT_EQ(fmi2GetFMUstate(h.c(), &state), fmi2OK);
+  size_t size = 0;
+  EXPECT_EQ(fmi2SerializedFMUstateSize(h.c(), state, &size), fmi2OK);
+  std::vector<fmi2Byte> bytes(size);
+  EXPECT_EQ(fmi2SerializeFMUstate(h.c(), state, bytes.data(), size), fmi2OK);
+  fmi2FreeFMUstate(h.c(), &state);
+  return bytes;
+}
+
+// docs/sdk.md, "State images": the same bytes on any host
+TEST(fmu_state, a_serialized_state_is_laid_out_little_endian_field_by_field) {
+  fmi_harness h;
+  h.to_step_complete();
+  run(h, 0.0, 3);
+  const std::vector<fmi2Byte> bytes = serialized(h);
+  ASSERT_GT(bytes.size(), 64u);
+  EXPECT_EQ(std::string(bytes.data(), 8), "STRDSTA2");
+  const auto guid_size = static_cast<std::size_t>(little_endian(&bytes[8], 8));
+  ASSERT_LT(guid_size, 64u);
+  const std::size_t time_at = 16 + guid_size;
+  EXPECT_EQ(little_endian(&bytes[time_at], 8), 30'000'000u);  // 3 steps of 10 ms, in ns
+  // then the lifecycle (u32) and the termination flag (u8); then the data, gain first
+  const double gain = h.get_real("gain");
+  std::uint64_t gain_bits = 0;
+  std::memcpy(&gain_bits, &gain, sizeof gain);
+  EXPECT_EQ(little_endian(&bytes[time_at + 8 + 4 + 1], 8), gain_bits);
+}
+
+TEST(fmu_state, a_state_of_the_earlier_memory_layout_or_cut_short_is_refused) {
+  fmi_harness h;
+  h.to_step_complete();
+  std::vector<fmi2Byte> bytes = serialized(h);
+  bytes[7] = '1';
+  fmi2FMUstate state = nullptr;
+  EXPECT_EQ(fmi2DeSerializeFMUstate(h.c(), bytes.data(), bytes.size(), &state), fmi2Error);
+  EXPECT_TRUE(h.logged("an FMU state of an earlier Stride (format 1"));
+
+  bytes[7] = '2';
+  ASSERT_EQ(fmi2DeSerializeFMUstate(h.c(), bytes.data(), bytes.size() - 1, &state), fmi2OK);
+  EXPECT_EQ(fmi2SetFMUstate(h.c(), state), fmi2Error);
+  EXPECT_TRUE(h.logged("the FMU state is damaged or is not of this component (it ends early)"));
 }
 
 TEST(fmu_state, state_of_another_instance_is_unknown_here) {

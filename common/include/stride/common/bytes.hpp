@@ -42,6 +42,8 @@ class byte_writer {
     bytes_.insert(bytes_.end(), b.begin(), b.end());
   }
   void put_string(const std::string& s) { put_bytes(std::as_bytes(std::span(s.data(), s.size()))); }
+  /// Bytes as they are, no length before them (the reader knows how many).
+  void put_raw(std::span<const std::byte> b) { bytes_.insert(bytes_.end(), b.begin(), b.end()); }
   const std::vector<std::byte>& bytes() const noexcept { return bytes_; }
   std::vector<std::byte> take() { return std::move(bytes_); }
 
@@ -70,6 +72,10 @@ class byte_reader {
     return static_cast<std::size_t>(n);
   }
   std::span<const std::byte> get_bytes() { return take(get_size()); }
+  /// The next `n` bytes as they are (what put_raw wrote).
+  std::span<const std::byte> get_raw(std::size_t n) { return take(n); }
+  /// All bytes not read yet.
+  std::span<const std::byte> get_rest() { return take(bytes_.size() - pos_); }
   std::string get_string() {
     const auto b = get_bytes();
     return std::string(reinterpret_cast<const char*>(b.data()), b.size());

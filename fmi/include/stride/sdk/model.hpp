@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "stride/common/bytes.hpp"
+#include "stride/sdk/state_fields.hpp"
 #include "stride/sdk/types.hpp"
 #include "stride/sdk/variable_table.hpp"
 
@@ -28,6 +30,19 @@ namespace stride::sdk {
 class model_error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// Reads a state image; a damaged one (too short, too long, a Boolean neither 0 nor 1) is a
+/// model_error.
+class state_reader : public common::byte_reader<model_error> {
+ public:
+  explicit state_reader(std::span<const std::byte> bytes)
+      : common::byte_reader<model_error>(bytes,
+                                         "the FMU state is damaged or is not of this "
+                                         "component (it ends early)") {}
+  void require_end() const {
+    if (!at_end()) throw model_error("the FMU state is longer than this component's state");
+  }
 };
 
 enum class log_level { info, warning, error };
@@ -93,55 +108,81 @@ class model {
   virtual void terminate() {}
 
   /// The complete evolving state as bytes; restoring it must reproduce the continuation
-  /// bit-exactly.
+  /// bit-exactly, on this host or any other (numbers little-endian, no padding: see
+  /// stride/sdk/state_fields.hpp).
   virtual std::vector<std::byte> save_state() const = 0;
   /// Throws model_error when the bytes do not fit this component.
   virtual void restore_state(std::span<const std::byte> bytes) = 0;
 };
 
-/// A model whose whole state is its trivially copyable `Data`: state save/restore are copies.
+/// A model whose whole state is its trivially copyable `Data`, whose fields `state_fields`
+/// lists (stride/sdk/state_fields.hpp): its state image is those fields, portable across hosts.
 template <class Data>
 class model_base : public model {
+  static_assert(described_state<Data>,
+                "list the fields of the component's data struct in a state_fields() function "
+                "beside it (stride/sdk/state_fields.hpp)");
+
  public:
+  model_base() { require_complete_state_fields(); }
+
   void* data() override { return &data_; }
 
   std::vector<std::byte> save_state() const override {
-    std::vector<std::byte> bytes(sizeof(Data));
-    std::memcpy(bytes.data(), &data_, sizeof(Data));
-    return bytes;
+    common::byte_writer w;
+    put_state(w, data_);
+    return w.take();
   }
   void restore_state(std::span<const std::byte> bytes) override {
-    if (bytes.size() != sizeof(Data)) {
-      throw model_error("FMU state has " + std::to_string(bytes.size()) + " bytes, expected " +
-                        std::to_string(sizeof(Data)));
-    }
-    std::memcpy(&data_, bytes.data(), sizeof(Data));
+    state_reader r(bytes);
+    Data restored = data_;
+    get_state(r, restored);
+    r.require_end();
+    data_ = restored;  // assigned, not replaced: the glue holds its address
   }
 
  protected:
   Data data_{};
+
+ private:
+  // a member missing from state_fields() would be lost silently by every save and restore
+  static void require_complete_state_fields() {
+    static const std::string gap = state_fields_gap<Data>();
+    if (!gap.empty()) {
+      throw model_error("the component's state_fields() is incomplete: " + gap);
+    }
+  }
 };
 
 /// A model whose values live in a byte buffer laid out by buffer_table_builder (a component
 /// whose interface is read at run time); the buffer starts as the table's start values and is
-/// the whole state unless the model adds its own.
+/// the whole state unless the model adds its own. Its image is every reserved value in order.
 class buffer_model : public model {
  public:
   explicit buffer_model(const variable_table& table)
       : data_(static_cast<const std::byte*>(table.defaults()),
-              static_cast<const std::byte*>(table.defaults()) + table.data_size()) {}
+              static_cast<const std::byte*>(table.defaults()) + table.data_size()),
+        storage_(table.storage()) {}
   void* data() override { return data_.data(); }
 
-  std::vector<std::byte> save_state() const override { return data_; }
+  std::vector<std::byte> save_state() const override {
+    common::byte_writer w;
+    save_buffer(w);
+    return w.take();
+  }
   void restore_state(std::span<const std::byte> bytes) override {
-    if (bytes.size() != data_.size()) {
-      throw model_error("FMU state has " + std::to_string(bytes.size()) + " bytes, expected " +
-                        std::to_string(data_.size()));
-    }
-    std::memcpy(data_.data(), bytes.data(), bytes.size());
+    state_reader r(bytes);
+    const std::vector<std::byte> restored = read_buffer(r);
+    r.require_end();
+    set_buffer(restored);
   }
 
  protected:
+  /// The buffer's part of an image that goes on with more.
+  void save_buffer(common::byte_writer& w) const;
+  /// Reads the buffer's part into the buffer: all of it or, when the image is damaged, nothing.
+  void restore_buffer(state_reader& r) { set_buffer(read_buffer(r)); }
+
   /// The value of T at `offset` (as reserved with buffer_table_builder).
   template <class T>
   T& value(std::size_t offset) {
@@ -154,7 +195,11 @@ class buffer_model : public model {
   std::size_t data_size() const { return data_.size(); }
 
  private:
+  std::vector<std::byte> read_buffer(state_reader& r) const;
+  void set_buffer(const std::vector<std::byte>& values);
+
   std::vector<std::byte> data_;
+  std::vector<storage_run> storage_;
 };
 
 }  // namespace stride::sdk

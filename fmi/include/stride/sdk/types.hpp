@@ -52,6 +52,12 @@ struct fixed_string {
     std::memcpy(text, value.data(), value.size());
     text[value.size()] = '\0';
   }
+
+  /// Its state image (stride/sdk/state_fields.hpp): the characters as they are.
+  template <class F>
+  friend void state_fields(fixed_string& s, F&& f) {
+    f(s.text);
+  }
 };
 
 /// Default capacity for paths and other free text in component data.

@@ -54,6 +54,14 @@ struct variable {
   }
 };
 
+/// Values a buffer_table_builder set aside: `count` values of `element_size` bytes from `offset`.
+struct storage_run {
+  std::size_t offset = 0;
+  std::size_t count = 0;
+  std::size_t element_size = 0;
+  value_type type = value_type::real;
+};
+
 /// The finished, immutable table plus a default-constructed data struct holding start values.
 class variable_table {
  public:
@@ -73,12 +81,16 @@ class variable_table {
   /// The data struct as default-constructed: the start values.
   const void* defaults() const { return defaults_.get(); }
   std::size_t data_size() const { return data_size_; }
+  /// For a buffer table: every reserved run of values, in order (what a state image holds).
+  const std::vector<storage_run>& storage() const { return storage_; }
 
  private:
+  friend class buffer_table_builder;
   std::vector<variable> vars_;
   std::vector<const variable*> by_vr_;
   std::shared_ptr<const void> defaults_;
   std::size_t data_size_;
+  std::vector<storage_run> storage_;
 };
 
 namespace detail {
@@ -221,6 +233,7 @@ class buffer_table_builder : public table_builder_base {
     for (std::size_t i = 0; i < count; ++i) {
       std::memcpy(defaults_.data() + offset + i * sizeof(T), &start, sizeof(T));
     }
+    storage_.push_back({offset, count, sizeof(T), detail::storage_traits<T>::type});
     return offset;
   }
   /// Declares `name` over the value of T at `offset` (count 1), or `name[1]`..`name[count]`
@@ -256,6 +269,7 @@ class buffer_table_builder : public table_builder_base {
 
  private:
   std::vector<std::byte> defaults_;
+  std::vector<storage_run> storage_;
 };
 
 }  // namespace stride::sdk

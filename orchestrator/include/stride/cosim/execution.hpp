@@ -73,6 +73,16 @@ struct execution_state {
   std::any algorithm;
 };
 
+/// One component's image in save_state_bytes().
+struct saved_component {
+  std::string name;
+  std::vector<std::byte> image;
+};
+
+/// The components' images in execution::save_state_bytes(), restoring nothing (e.g. to see whose
+/// images they are). \throws validation_error for damaged bytes.
+std::vector<saved_component> saved_components(std::span<const std::byte> state_bytes);
+
 /// Components, their connections and their algorithm, run over time.
 class execution {
  public:
@@ -139,7 +149,7 @@ class execution {
   /// that followed the save. Observers are not told (a recorder keeps its rows).
   void restore_state(const execution_state& state);
   /// save_state() as bytes, for a file (a run's checkpoint): the step count, each component's
-  /// name and state, the algorithm's state, in host byte order.
+  /// name and state, the algorithm's state (docs/checkpoint-format.md).
   std::vector<std::byte> save_state_bytes() const;
   /// Restores save_state_bytes() of an execution of the same system (the same components in the
   /// same order, the same wiring). \throws validation_error naming what differs, or for damaged

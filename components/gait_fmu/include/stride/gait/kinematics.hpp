@@ -45,6 +45,12 @@ struct foot_target {
   T x, y, z, roll, pitch, yaw;
 };
 
+/// Its fields, for state images (stride/sdk/state_fields.hpp).
+template <class T, class F>
+void state_fields(foot_target<T>& t, F&& f) {
+  f(t.x, t.y, t.z, t.roll, t.pitch, t.yaw);
+}
+
 /// Webots / URDF joint angle of a servo count: (count - 2048) * 0.088 * pi / 180 rad.
 inline double servo_count_to_rad(int count) {
   return (count - servo_center) * degrees_per_count * std::numbers::pi / 180.0;

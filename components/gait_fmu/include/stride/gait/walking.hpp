@@ -97,7 +97,8 @@ struct gait_pose {
   double body_swing_z;        ///< framework diagnostic GetBodySwingZ (mm)
 };
 
-/// All evolving state of the generator. Trivially copyable: saving an FMU state is a struct copy.
+/// All evolving state of the generator: trivially copyable, its fields listed below for state
+/// images.
 struct walking_state {
   /// Goal position of servo ID i + 1 in MX-28 counts (0..4095), as the framework outputs them.
   int servo_count[servo_total];
@@ -122,6 +123,33 @@ struct walking_state {
   gait_pose pose;              ///< what the last tick evaluated
 };
 static_assert(std::is_trivially_copyable_v<walking_state>);
+
+// The fields of the state structs, for the gait FMU's state image (stride/sdk/state_fields.hpp;
+// the FMU checks that each list covers its struct).
+template <class F>
+void state_fields(gait_timing& s, F&& f) {
+  f(s.period, s.dsp_ratio, s.ssp_ratio, s.ssp_start_l, s.ssp_end_l, s.ssp_start_r, s.ssp_end_r,
+    s.phase_time1, s.phase_time2, s.phase_time3, s.pelvis_offset, s.pelvis_swing, s.arm_swing_gain,
+    s.rate_x_swing, s.rate_y_swing, s.rate_z_swing, s.rate_step, s.rate_lift, s.rate_arm,
+    s.shift_step_l, s.shift_step_r, s.shift_lift_l, s.shift_lift_r, s.hold_step_l0, s.hold_step_l1,
+    s.hold_step_r1, s.hold_lift_l0, s.hold_lift_l1, s.hold_lift_r0, s.hold_lift_r1);
+}
+template <class F>
+void state_fields(gait_amplitudes& s, F&& f) {
+  f(s.x_move, s.x_swing, s.y_move, s.y_move_shift, s.y_swing, s.z_move, s.z_move_shift, s.z_swing,
+    s.a_move, s.a_move_shift);
+}
+template <class F>
+void state_fields(gait_pose& s, F&& f) {
+  f(s.right, s.left, s.arm_right_deg, s.arm_left_deg, s.pelvis_right, s.pelvis_left, s.body_swing_y,
+    s.body_swing_z);
+}
+template <class F>
+void state_fields(walking_state& s, F&& f) {
+  f(s.servo_count, s.time_ms, s.eval_time_ms, s.phase, s.footsteps, s.ctrl_running, s.real_running,
+    s.moved_since_centre, s.ik_failed, s.x_command, s.y_command, s.a_command, s.aim_on, s.timing,
+    s.amplitudes, s.pose);
+}
 
 /// The generator. Const: its only configuration is the IK mode; all state is in walking_state.
 class walking {

@@ -34,6 +34,16 @@ struct walking_params {
   int d_gain = 0;
 };
 
+/// Its fields, for the gait FMU's state image (stride/sdk/state_fields.hpp).
+template <class F>
+void state_fields(walking_params& p, F&& f) {
+  f(p.x_offset, p.y_offset, p.z_offset, p.roll_offset, p.pitch_offset, p.yaw_offset,
+    p.hip_pitch_offset, p.period_time, p.dsp_ratio, p.step_forward_back_ratio, p.foot_height,
+    p.swing_right_left, p.swing_top_down, p.pelvis_offset, p.arm_swing_gain, p.balance_knee_gain,
+    p.balance_ankle_pitch_gain, p.balance_hip_roll_gain, p.balance_ankle_roll_gain, p.p_gain,
+    p.i_gain, p.d_gain);
+}
+
 /// One row of the parameter table. Exactly one of `real_member` / `int_member` is non-null.
 struct param_info {
   const char* key;                      ///< INI key == FMI variable name, e.g. "period_time"

@@ -51,12 +51,19 @@ struct shared_checkpoint {
 /// A learner checkpoint: enough to continue a run exactly from an episode boundary.
 struct checkpoint {
   std::string config;            ///< learner_config::canonical() of the run
-  std::vector<std::byte> state;  ///< session_state bytes
+  std::vector<std::byte> state;  ///< session_state, field by field (stride/sdk/state_fields.hpp)
   std::vector<double> values;    ///< V
   std::vector<eligibility_traces::entry> traces;
   std::map<std::string, std::uint64_t> file_sizes;  ///< artefact CSV sizes to truncate to
   std::optional<shared_checkpoint> shared;          ///< V shared with other agents
 };
+
+/// A checkpoint as bytes (numbers little-endian on every host): what the file holds, and the
+/// end of the learner FMU's state image.
+std::vector<std::byte> checkpoint_bytes(const checkpoint& c);
+/// Reads checkpoint_bytes(); throws learner_error starting with `what` for damaged or foreign
+/// bytes.
+checkpoint checkpoint_from_bytes(std::span<const std::byte> bytes, const std::string& what);
 
 /// Writes `file` atomically: `file`.tmp, flushed and synced, then renamed over `file`.
 void write_checkpoint(const std::filesystem::path& file, const checkpoint& c);

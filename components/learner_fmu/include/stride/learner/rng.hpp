@@ -12,6 +12,12 @@ struct rng_state {
   std::uint64_t s[4] = {};
 };
 
+/// Its fields, for state images (stride/sdk/state_fields.hpp).
+template <class F>
+void state_fields(rng_state& r, F&& f) {
+  f(r.s);
+}
+
 /// The state for a seed (any value, 0 included).
 rng_state seed_rng(std::uint64_t seed);
 

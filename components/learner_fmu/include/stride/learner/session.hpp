@@ -81,7 +81,7 @@ struct learner_config {
 
 enum class walk_phase : int { settling = 0, measuring = 1, episode_ended = 2, finished = 3 };
 
-/// Everything that evolves besides V and the traces: trivially copyable (FMU state, checkpoint).
+/// Everything that evolves besides V and the traces (FMU state, checkpoint).
 struct session_state {
   rng_state rng{};
   std::int64_t clock_ns = 0;  ///< simulated time seen by the learner (restored by a resume)
@@ -116,6 +116,18 @@ struct session_state {
   std::int64_t eval_windows = 0;   ///< evaluate: windows without a fall
 };
 static_assert(std::is_trivially_copyable_v<session_state>);
+
+/// Its fields, for state images and checkpoints (stride/sdk/state_fields.hpp; the learner FMU
+/// checks that the list covers the struct).
+template <class F>
+void state_fields(session_state& s, F&& f) {
+  f(s.rng, s.clock_ns, s.state, s.rl_step, s.episode, s.step_in_episode, s.falls_in_episode,
+    s.total_falls, s.episode_reward, s.last_reward, s.last_speed, s.last_delta,
+    s.last_episode_reward, s.last_sum_abs_dv, s.episode_first_state, s.phase, s.footsteps_seen,
+    s.last_footsteps, s.target_footsteps, s.phase_start_ns, s.x0, s.y0, s.t0_ns, s.window_end_ns,
+    s.steps_without_fall, s.eval_speed_sum, s.restarts, s.restart_pending, s.balance_gate,
+    s.eval_distance, s.eval_time, s.eval_windows);
+}
 
 /// The settings a protocol implies: Table 2 for paper; config.h and Walk.cpp of the authors'
 /// controller for authors_code (λ 0.3, −200 per fall, 30 steps, the capped reward
