@@ -8,6 +8,7 @@ shift
 out="$("$@" 2>&1)"
 status=$?
 printf '%s\n' "$out"
+[ $status -eq 77 ] && exit 77  # skipped by the script, which said why
 if [ $status -ne 0 ]; then
   echo "run_bench_script: $1 exited with $status" >&2
   exit 1

@@ -6,14 +6,22 @@
 #              not fail over, the stall is logged and counted; then for 3 s: the robot fails over
 #              to s1. Both CSVs equal the
 #              in-process walk byte for byte, and w1, back on the network, serves the next run.
-#   lossy:     every link with netem (2 ms ± 1 ms delay, 5 % loss, 1 % duplicates, reordering):
-#              the CSV equals the in-process walk. Needs the kernel's netem qdisc.
+#   lossy:     w1 (host a) and the orchestrator (host b) talk over a link of their own that
+#              delays every packet 2 ms ± 1 ms, drops 5 %, duplicates 1 % and sends 25 % at
+#              once, overtaking delayed ones (netem's settings, made in user space by
+#              lossy_link between two TUN devices): the CSV equals the in-process walk, and the
+#              link did drop, duplicate and reorder packets.
+#   delay:     not a test but a figure of BENCHMARKS.md (bench/remote/delayed_walk.sh): the walk
+#              (STOP simulated seconds, default 60) over such a link with 2 ms delay only, its
+#              wall time printed.
 # Needs root (CAP_NET_ADMIN): otherwise it is skipped (exit 77) with the reason.
-# usage: netns_failover_test.sh STRIDE_CLI SOURCE_DIR partition|lossy
+# usage: netns_failover_test.sh STRIDE_CLI SOURCE_DIR partition|lossy|delay [LOSSY_LINK [STOP]]
 set -u
 cli="$1"
 src="$2"
 mode="$3"
+lossy_link="${4:-}"
+stop="${5:-60}"
 skip() {
   echo "SKIPPED: $*"
   exit 77
@@ -58,10 +66,11 @@ peers="<Peer address=\"${addr[a]}\"/><Peer address=\"${addr[b]}\"/><Peer address
 sed -e "s|<Peer address=\"\${PEER_ADDR}\"/>|$peers|" "$src/docs/dds/multi-host.xml" > "$work/dds.xml"
 grep -q "${addr[c]}" "$work/dds.xml" || fail "could not list the peers in the DDS configuration"
 
+iface=v  # the hosts talk on their veth (v) or, over the lossy link, their TUN device (t)
 on() {  # HOST COMMAND...: runs it in that host's namespace with its interface
   local h="$1"
   shift
-  ip netns exec "stride-$h-$tag" env MY_IFACE="v$h$tag" "$@"
+  ip netns exec "stride-$h-$tag" env MY_IFACE="$iface$h$tag" "$@"
 }
 start_worker() {  # HOST NAME: a worker, waited for until it is ready
   on "$1" "$cli" worker --name "$2" --domain 6 --dds-config "$work/dds.xml" --insecure \
@@ -99,6 +108,32 @@ finish_run() {  # NAME: waits for it; it must succeed and equal the in-process w
   wait "$run_pid" || { cat "$work/$1.log"; fail "$1 failed"; }
   cmp -s "$work/local/results.csv" "$work/$1/results.csv" || fail "$1: results differ"
 }
+start_lossy_link() {  # LOSSY_LINK OPTIONS...: hosts a and b joined by it (10.215.0.1 and .2)
+  [ -x "$lossy_link" ] || fail "the lossy_link helper is not given"
+  for h in a b; do
+    on "$h" ip tuntap add dev "t$h$tag" mode tun 2> "$work/tun.err" ||
+      skip "no TUN devices here ($(head -c 200 "$work/tun.err"))"
+  done
+  on a ip addr add 10.215.0.1 peer 10.215.0.2 dev "ta$tag" && on a ip link set "ta$tag" up &&
+    on b ip addr add 10.215.0.2 peer 10.215.0.1 dev "tb$tag" && on b ip link set "tb$tag" up ||
+    fail "cannot set up the TUN devices"
+  "$lossy_link" "/run/netns/stride-a-$tag" "ta$tag" "/run/netns/stride-b-$tag" "tb$tag" "$@" \
+    > "$work/link.log" 2>&1 &
+  link_pid=$!
+  for _ in $(seq 100); do
+    grep -q ready "$work/link.log" && break
+    sleep 0.05
+  done
+  grep -q ready "$work/link.log" || { cat "$work/link.log"; fail "lossy_link did not start"; }
+  iface=t
+  sed -e "s|<Peer address=\"\${PEER_ADDR}\"/>|<Peer address=\"10.215.0.1\"/><Peer address=\"10.215.0.2\"/>|" \
+    "$src/docs/dds/multi-host.xml" > "$work/dds.xml"
+}
+stop_lossy_link() {  # prints what the link did
+  kill -TERM "$link_pid"
+  wait "$link_pid"
+  grep "packets" "$work/link.log"
+}
 
 "$cli" run "$src/models/walk.xml" --quiet --output "$work/local" || fail "in-process walk"
 fifth=$(($(stat -c %s "$work/local/results.csv") / 5))
@@ -132,17 +167,30 @@ case "$mode" in
     echo "PASSED: a 0.5 s cut changes nothing but a logged and counted stall, a 3 s cut fails over to the standby; every CSV equals the in-process walk; the worker that came back serves the next run"
     ;;
   lossy)
-    for h in a b; do
-      on "$h" tc qdisc add dev "v$h$tag" root netem delay 2ms 1ms loss 5% duplicate 1% \
-        reorder 25% 50% 2> "$work/tc.err" ||
-        skip "no netem on this kernel (tc: $(head -c 200 "$work/tc.err"))"
-    done
+    start_lossy_link --delay 2 --jitter 1 --loss 0.05 --duplicate 0.01 --reorder 0.25 --seed 7
     "$cli" run "$src/models/walk.xml" --quiet --stop-time 10 --output "$work/local" --force ||
       fail "in-process walk"
     start_worker a w1
     start_run lossy --quiet --stop-time 10
     finish_run lossy
-    echo "PASSED: over links with 2 ms ± 1 ms delay, 5 % loss, 1 % duplicates and reordering the CSV equals the in-process walk"
+    what=$(stop_lossy_link)
+    echo "$what"
+    for n in dropped duplicated reordered; do
+      echo "$what" | grep -Eq "[1-9][0-9]* $n" || fail "the link never $n a packet: $what"
+    done
+    echo "PASSED: over a link with 2 ms ± 1 ms delay, 5 % loss, 1 % duplicates and reordering the CSV equals the in-process walk"
+    ;;
+  delay)
+    start_lossy_link --delay 2 --jitter 0
+    start_worker a w1
+    "$cli" run "$src/models/walk.xml" --quiet --stop-time "$stop" --output "$work/local" --force ||
+      fail "in-process walk"
+    start=$(date +%s.%N)
+    start_run delayed --quiet --stop-time "$stop"
+    finish_run delayed
+    end=$(date +%s.%N)
+    stop_lossy_link
+    echo "the $stop s walk with the robot on a worker 2 ms away (4 ms round trip): $(echo "$end - $start" | bc) s"
     ;;
   *) fail "mode is partition or lossy, not '$mode'" ;;
 esac
