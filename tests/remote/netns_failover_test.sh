@@ -129,10 +129,12 @@ start_lossy_link() {  # LOSSY_LINK OPTIONS...: hosts a and b joined by it (10.21
   sed -e "s|<Peer address=\"\${PEER_ADDR}\"/>|<Peer address=\"10.215.0.1\"/><Peer address=\"10.215.0.2\"/>|" \
     "$src/docs/dds/multi-host.xml" > "$work/dds.xml"
 }
-stop_lossy_link() {  # prints what the link did
+stop_lossy_link() {  # waits for the link to end; what it did is then in link_counts
   kill -TERM "$link_pid"
-  wait "$link_pid"
-  grep "packets" "$work/link.log"
+  wait "$link_pid"  # in this shell: a subshell cannot wait for it
+  link_counts=$(grep "packets" "$work/link.log") ||
+    { cat "$work/link.log"; fail "lossy_link did not say what it did"; }
+  echo "$link_counts"
 }
 
 "$cli" run "$src/models/walk.xml" --quiet --output "$work/local" || fail "in-process walk"
@@ -173,10 +175,9 @@ case "$mode" in
     start_worker a w1
     start_run lossy --quiet --stop-time 10
     finish_run lossy
-    what=$(stop_lossy_link)
-    echo "$what"
+    stop_lossy_link
     for n in dropped duplicated reordered; do
-      echo "$what" | grep -Eq "[1-9][0-9]* $n" || fail "the link never $n a packet: $what"
+      echo "$link_counts" | grep -Eq "[1-9][0-9]* $n" || fail "the link never $n a packet"
     done
     echo "PASSED: over a link with 2 ms ± 1 ms delay, 5 % loss, 1 % duplicates and reordering the CSV equals the in-process walk"
     ;;
