@@ -356,13 +356,7 @@ int test(const test_arguments& args, const stride::suite::assertion_registry& ki
 int inspect(const fs::path& file) {
   if (file.extension() != ".fmu") return inspect_system(file);
   const fs::path& fmu_file = file;
-  // only the model description is needed: no binary is loaded
-  const std::optional<std::string> text = read_archive_entry(fmu_file, "modelDescription.xml");
-  if (!text) {
-    throw fmu_import_error(fmu_file.string() + ": no modelDescription.xml at the archive root");
-  }
-  const model_description md =
-      parse_model_description_text(*text, (fmu_file / "modelDescription.xml").string());
+  const model_description md = read_archive_description(fmu_file);
   std::ostringstream out;
   int key_width = 22;
   auto row = [&](const char* key, const std::string& value) {

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "stride/common/text.hpp"
-#include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
 
@@ -196,13 +195,7 @@ const model_description& fmu_facts::of(const fs::path& fmu, const std::string& w
   if (auto it = known_.find(fmu); it != known_.end()) return it->second;
   try {
     // only the description is inflated: the binaries are the run's business
-    const std::optional<std::string> text = read_archive_entry(fmu, "modelDescription.xml");
-    if (!text) {
-      throw fmu_import_error(fmu.string() + ": no modelDescription.xml at the archive root");
-    }
-    model_description md =
-        parse_model_description_text(*text, (fmu / "modelDescription.xml").string());
-    return known_.emplace(fmu, std::move(md)).first->second;
+    return known_.emplace(fmu, read_archive_description(fmu)).first->second;
   } catch (const std::exception& e) {
     throw validation_error(where + e.what());
   }

@@ -14,6 +14,7 @@
 #include "md_reader_base.hpp"
 #include "stride/common/files.hpp"
 #include "stride/common/text.hpp"
+#include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 #include "xml_util.hpp"
 
@@ -300,6 +301,12 @@ model_description parse_model_description_text(std::string_view xml, const std::
   tinyxml2::XMLDocument doc;
   doc.Parse(xml.data(), xml.size());
   return parse(doc, origin);
+}
+
+model_description read_archive_description(const std::filesystem::path& fmu) {
+  const std::optional<std::string> text = read_archive_entry(fmu, "modelDescription.xml");
+  if (!text) throw fmu_import_error(fmu.string() + ": no modelDescription.xml at the archive root");
+  return parse_model_description_text(*text, (fmu / "modelDescription.xml").string());
 }
 
 }  // namespace stride::cosim

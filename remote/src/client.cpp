@@ -138,7 +138,7 @@ dds_entity_t client::connect(const std::string& worker) {
   // Requests sent before the worker's reader has matched this writer, and replies sent before
   // the run's reply writer on the worker has matched our reader, are lost (volatile data): a
   // hello is repeated until one is answered, and then both directions are open.
-  for (auto wait = std::chrono::milliseconds(20);; wait = std::min(2 * wait, limits_.poll)) {
+  for (auto wait = std::chrono::milliseconds(2);; wait = std::min(2 * wait, limits_.poll)) {
     stride_remote_request hello{};
     hello.op = static_cast<std::int32_t>(op::hello);
     hello.component = const_cast<char*>("");

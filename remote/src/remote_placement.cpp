@@ -9,8 +9,8 @@
 #include "failover_component.hpp"
 #include "remote_component.hpp"
 #include "remote_group.hpp"
-#include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
+#include "stride/cosim/model_description.hpp"
 #include "stride/cosim/system_builder.hpp"
 
 namespace stride::remote {
@@ -28,17 +28,6 @@ std::vector<std::byte> read_bytes(const fs::path& file, std::uint64_t limit) {
   }
   const auto* p = reinterpret_cast<const std::byte*>(text.data());
   return {p, p + text.size()};
-}
-
-// the model description only: the binary stays unloaded here
-cosim::model_description describe(const fs::path& file, const cosim::fmu_import_options& import) {
-  cosim::temp_dir dir("stride-remote-", import.extract_root);
-  cosim::extract_archive(file, dir.path(), import.limits);
-  const fs::path md = dir.path() / "modelDescription.xml";
-  if (!fs::is_regular_file(md)) {
-    throw cosim::fmu_import_error(file.string() + ": no modelDescription.xml at the archive root");
-  }
-  return cosim::parse_model_description(md);
 }
 
 // whether the instance of the kind chosen can give state images (failover needs them)
@@ -128,7 +117,7 @@ std::unique_ptr<cosim::component> remote_placement::create(
   try {
     recipe->archive = read_bytes(file, context.import.limits.max_total_size);
     recipe->hash = content_hash(recipe->archive);
-    recipe->description = describe(file, context.import);
+    recipe->description = cosim::read_archive_description(file);
     // the kind and the integrator settings travel with the instantiate request
     recipe->model_exchange = cosim::model_exchange_choice(spec, recipe->description, file);
     if (!context.system->failover.standby.empty() &&

@@ -206,6 +206,33 @@ TEST_F(cosim_import, one_entry_is_read_alone_within_the_same_limits) {
                fmu_import_error);
 }
 
+TEST_F(cosim_import, the_description_of_an_archive_is_read_without_unpacking_it) {
+  const fs::path fmu_file = root.path() / "described.fmu";
+  write_zip(fmu_file, {{"modelDescription.xml", k_model_description},
+                       {"binaries/linux64/demo.so", "not an ELF file"}});
+  const model_description md = read_archive_description(fmu_file);
+  ASSERT_EQ(md.variables.size(), 6u);
+  EXPECT_EQ(md.variables[2].name, "y");
+  const fs::path broken = root.path() / "broken.fmu";
+  write_zip(broken, {{"modelDescription.xml", "<fmiModelDescription"}});
+  try {
+    read_archive_description(broken);
+    ADD_FAILURE() << "no error";
+  } catch (const fmu_import_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr((broken / "modelDescription.xml").string()));
+  }
+  const fs::path empty = root.path() / "empty.fmu";
+  write_zip(empty, {{"resources/x", "x"}});
+  try {
+    read_archive_description(empty);
+    ADD_FAILURE() << "no error";
+  } catch (const fmu_import_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              empty.string() + ": no modelDescription.xml at the archive root");
+  }
+  EXPECT_TRUE(extract_root_is_empty());
+}
+
 TEST_F(cosim_import, rejects_backslashes_and_non_zip_files) {
   const fs::path fmu_file = root.path() / "win.fmu";
   write_zip(fmu_file, {{"binaries\\linux64\\demo.so", "x"}});

@@ -135,6 +135,10 @@ struct model_description {
 model_description parse_model_description(const std::filesystem::path& file);
 /// Reads a modelDescription.xml held in memory; `origin` names it in error messages.
 model_description parse_model_description_text(std::string_view xml, const std::string& origin);
+/// Reads the modelDescription.xml of the FMU archive `fmu`, inflating that entry only (no
+/// binary is unpacked or loaded); errors name `fmu/modelDescription.xml`.
+/// \throws fmu_import_error also for an archive without it at its root.
+model_description read_archive_description(const std::filesystem::path& fmu);
 
 }  // namespace stride::cosim
 
