@@ -615,11 +615,7 @@ class learner_model : public sdk::model_base<learner_data> {
     if (ck.values.size() != values_.size()) {
       throw sdk::model_error(file.string() + ": checkpoint does not fit this learner's grid");
     }
-    sdk::state_reader r(ck.state);
-    session_state session;
-    sdk::get_state(r, session);
-    r.require_end();
-    data_.session = session;
+    sdk::read_state_image(ck.state, data_.session);
     values_.values() = ck.values;
     traces_.entries = ck.traces;
   }
@@ -636,9 +632,7 @@ class learner_model : public sdk::model_base<learner_data> {
       writer_.episode(e);
       checkpoint ck;
       ck.config = config_.canonical();
-      common::byte_writer session;
-      sdk::put_state(session, data_.session);
-      ck.state = session.take();
+      ck.state = sdk::state_image(data_.session);
       ck.values = values_.values();
       ck.traces = traces_.entries;
       ck.file_sizes = writer_.flush();

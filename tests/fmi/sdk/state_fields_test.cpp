@@ -67,6 +67,22 @@ TEST(state_fields, a_damaged_image_is_refused) {
   EXPECT_THROW(get_state(bad_bool, back), model_error);
 }
 
+TEST(state_fields, one_struct_alone_is_imaged_and_read_back_all_or_nothing) {
+  const std::vector<std::byte> image = state_image(sample::values());
+  EXPECT_EQ(image, sample::image());
+  sample::outer back;
+  read_state_image(image, back);
+  EXPECT_EQ(state_image(back), image);
+
+  const std::vector<std::byte> fresh = state_image(sample::outer{});
+  sample::outer kept;
+  std::vector<std::byte> longer = image;
+  longer.push_back(std::byte{0});
+  EXPECT_THROW(read_state_image(longer, kept), model_error);
+  EXPECT_THROW(read_state_image(std::span(image).first(image.size() - 1), kept), model_error);
+  EXPECT_EQ(state_image(kept), fresh);
+}
+
 TEST(state_fields, a_list_missing_a_member_or_naming_one_twice_is_caught) {
   EXPECT_EQ(state_fields_gap<sample::outer>(), "");
   EXPECT_EQ(state_fields_gap<sample::inner>(), "");

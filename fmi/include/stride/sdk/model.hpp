@@ -45,6 +45,25 @@ class state_reader : public common::byte_reader<model_error> {
   }
 };
 
+/// The image of one described struct alone (stride/sdk/state_fields.hpp).
+template <described_state T>
+std::vector<std::byte> state_image(const T& s) {
+  common::byte_writer w;
+  put_state(w, s);
+  return w.take();
+}
+
+/// Reads an image that is exactly one T into `s`: all of it or, when the image is damaged,
+/// nothing. `s` is assigned, not replaced, so that addresses into it stay valid.
+template <described_state T>
+void read_state_image(std::span<const std::byte> bytes, T& s) {
+  state_reader r(bytes);
+  T restored = s;
+  get_state(r, restored);
+  r.require_end();
+  s = restored;
+}
+
 enum class log_level { info, warning, error };
 
 /// Sends messages through the importer's FMI logger callback. Debug categories are filtered by
@@ -128,18 +147,9 @@ class model_base : public model {
 
   void* data() override { return &data_; }
 
-  std::vector<std::byte> save_state() const override {
-    common::byte_writer w;
-    put_state(w, data_);
-    return w.take();
-  }
-  void restore_state(std::span<const std::byte> bytes) override {
-    state_reader r(bytes);
-    Data restored = data_;
-    get_state(r, restored);
-    r.require_end();
-    data_ = restored;  // assigned, not replaced: the glue holds its address
-  }
+  std::vector<std::byte> save_state() const override { return state_image(data_); }
+  // in place: the glue holds the data's address
+  void restore_state(std::span<const std::byte> bytes) override { read_state_image(bytes, data_); }
 
  protected:
   Data data_{};
