@@ -15,6 +15,13 @@ std::optional<std::string> standby_pool::replacement_for(const std::string& lost
   return replaced_[lost] = workers_[next_++];
 }
 
+std::optional<std::string> standby_pool::replaced_by(const std::string& worker) const {
+  std::lock_guard lock(mutex_);
+  const auto it = replaced_.find(worker);
+  if (it == replaced_.end()) return std::nullopt;
+  return it->second;
+}
+
 void standby_pool::discard(const std::string& worker) {
   std::lock_guard lock(mutex_);
   std::erase_if(replaced_, [&](const auto& entry) { return entry.second == worker; });
@@ -115,6 +122,7 @@ void failover_component::fail_over(const cosim::component_error& lost) {
       for (const call& c : since_) replay(*fresh, c);
       inner_ = std::move(fresh);
       worker_ = *to;
+      ++generation_;
     } catch (const worker_lost&) {
       from = *to;  // the standby went too: the next one replaces it
       continue;
@@ -180,10 +188,20 @@ cosim::step_result failover_component::step(cosim::time_point t, cosim::duration
                                             cosim::value_block& outputs) {
   const cosim::step_result result =
       guarded([&](cosim::component& c) { return c.step(t, dt, inputs, outputs); });
+  record_step(t, dt, inputs);
+  if (image_due()) save_state();
+  return result;
+}
+
+void failover_component::record_step(cosim::time_point t, cosim::duration dt,
+                                     const cosim::value_block& inputs) {
   remember(step_call{t, dt, inputs});
   now_ = t + dt;
-  if (++steps_since_image_ >= snapshot_every_) save_state();
-  return result;
+  ++steps_since_image_;
+}
+
+void failover_component::take_image() {
+  remember(restore_call{inner_->save_state()});
 }
 
 std::vector<std::byte> failover_component::save_state() {

@@ -29,6 +29,8 @@ class standby_pool {
   /// The worker that replaces `lost`: the one already chosen for it, else the next unused
   /// standby; nullopt when none is left.
   std::optional<std::string> replacement_for(const std::string& lost);
+  /// The worker chosen to replace `worker` if it was lost, else nullopt.
+  std::optional<std::string> replaced_by(const std::string& worker) const;
   /// `worker` cannot be used (it did not answer): later calls skip it.
   void discard(const std::string& worker);
   /// Failovers so far (each lost worker counts once).
@@ -77,6 +79,20 @@ class failover_component final : public cosim::component {
   std::vector<std::byte> save_state() override;
   void restore_state(std::span<const std::byte> state) override;
 
+  // For a failover_group, which steps its members' instances on their worker as one unit.
+  /// The instance on the current worker.
+  cosim::component& instance() noexcept { return *inner_; }
+  /// Counts the instances made so far: it changes whenever this component fails over.
+  int generation() const noexcept { return generation_; }
+  /// Records a step the group made the instance take, with the inputs it stepped with.
+  void record_step(cosim::time_point t, cosim::duration dt, const cosim::value_block& inputs);
+  /// Whether a state image is due after the steps recorded.
+  bool image_due() const noexcept { return steps_since_image_ >= snapshot_every_; }
+  /// Takes the state image that is due. \throws worker_lost: the group fails over, not this.
+  void take_image();
+  /// Fails over as after a lost call: the instance moves to the standby that replaces its worker.
+  void move_to_standby(const cosim::component_error& lost) { fail_over(lost); }
+
  private:
   struct setup_call {
     cosim::time_point start;
@@ -120,6 +136,7 @@ class failover_component final : public cosim::component {
   std::vector<call> prefix_;  // up to the end of initialization: reaches the first step
   std::vector<call> since_;   // after prefix_: the last image (a restore_call first) and on
   int steps_since_image_ = 0;
+  int generation_ = 0;
   bool initialized_ = false;
   std::optional<cosim::time_point> now_;  // after the last step, for the log line
 };

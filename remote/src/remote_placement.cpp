@@ -7,6 +7,7 @@
 
 #include "client.hpp"
 #include "failover_component.hpp"
+#include "failover_group.hpp"
 #include "remote_component.hpp"
 #include "remote_group.hpp"
 #include "stride/cosim/error.hpp"
@@ -165,6 +166,7 @@ std::vector<std::pair<std::string, long>> remote_placement::events() const {
 
 std::unique_ptr<cosim::step_group> remote_placement::create_group(
     const std::vector<cosim::component*>& members) {
+  if (standby_) return create_failover_group(members);
   std::vector<remote_component*> parts;
   for (auto* m : members) {
     auto* part = dynamic_cast<remote_component*>(m);
@@ -176,6 +178,26 @@ std::unique_ptr<cosim::step_group> remote_placement::create_group(
   }
   if (parts.empty() || !link_) return nullptr;
   return std::make_unique<remote_group>(link_, parts.front()->worker(), std::move(parts));
+}
+
+std::unique_ptr<cosim::step_group> remote_placement::create_failover_group(
+    const std::vector<cosim::component*>& members) {
+  std::vector<failover_component*> movers;
+  for (auto* m : members) {
+    auto* mover = dynamic_cast<failover_component*>(m);
+    if (mover == nullptr || (!movers.empty() && mover->worker() != movers.front()->worker())) {
+      return nullptr;
+    }
+    movers.push_back(mover);
+  }
+  if (movers.empty()) return nullptr;
+  auto make = [link = link_](const std::vector<cosim::component*>& instances,
+                             const std::string& worker) -> std::unique_ptr<cosim::step_group> {
+    std::vector<remote_component*> parts;
+    for (auto* c : instances) parts.push_back(&dynamic_cast<remote_component&>(*c));
+    return std::make_unique<remote_group>(link, worker, std::move(parts));
+  };
+  return std::make_unique<failover_group>(std::move(movers), make, standby_);
 }
 
 fs::path remote_placement::source_of(const cosim::component_spec& spec) const {

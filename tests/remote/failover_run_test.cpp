@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <random>
+#include <regex>
 #include <string>
 #include <thread>
 
@@ -28,6 +29,7 @@ using ::testing::HasSubstr;
 const std::string k_cli = STRIDE_CLI;
 const fs::path k_source = STRIDE_SOURCE_DIR;
 const fs::path k_walk_on_worker = k_source / "models/distributed/walk-robot-on-worker.xml";
+const fs::path k_walk_on_one_worker = k_source / "models/distributed/walk-on-one-worker.xml";
 
 class failover_run : public ::testing::Test {
  protected:
@@ -43,10 +45,11 @@ class failover_run : public ::testing::Test {
     EXPECT_EQ(local.exit_code, 0) << local.err;
     return read_file(scratch.path() / "local/results.csv");
   }
-  pid_t start_run(int domain, const std::vector<std::string>& extra) {
+  pid_t start_run(int domain, const std::vector<std::string>& extra,
+                  const fs::path& system = k_walk_on_worker) {
     std::vector<std::string> args{k_cli,
                                   "run",
-                                  k_walk_on_worker.string(),
+                                  system.string(),
                                   "--domain",
                                   std::to_string(domain),
                                   "--output",
@@ -100,6 +103,43 @@ TEST_F(failover_run, a_worker_killed_mid_walk_is_replaced_and_the_csv_is_unchang
   EXPECT_THAT(read_file(scratch.path() / "remote/manifest.json"),
               AllOf(HasSubstr("\"status\": \"ok\""), ContainsRegex("\"failovers\": 1[,}]")));
   EXPECT_THAT(s1.output(), HasSubstr("loaded robot"));
+}
+
+// gait and robot on one worker step there as one group, also with a standby: the group moves
+// to the standby as a whole, its members each replaying what they stepped with
+TEST_F(failover_run, a_step_group_whose_worker_is_killed_moves_to_the_standby_as_a_group) {
+  const unsigned seed = std::random_device{}();
+  SCOPED_TRACE("kill point seed " + std::to_string(seed));
+  const std::string local = in_process_walk();
+  auto w1 = start_worker("w1", 175);
+  auto s1 = start_worker("s1", 175);
+  ASSERT_TRUE(w1.ready() && s1.ready()) << w1.output() << s1.output();
+  const pid_t run = start_run(175, {"--quiet", "--standby", "s1"}, k_walk_on_one_worker);
+  ASSERT_GT(run, 0);
+  const std::uintmax_t kill_point = random_point(local.size(), 0.1, 0.6, seed);
+  ASSERT_TRUE(wait_for_results(kill_point, run)) << run_log();
+  EXPECT_EQ(w1.stop(SIGKILL), 128 + SIGKILL);
+  ASSERT_EQ(wait_exit(run), 0) << run_log();
+  for (const std::string member : {"gait", "robot"}) {
+    EXPECT_THAT(run_log(),
+                ContainsRegex("\\[" + member +
+                              "\\] warning \\(failover\\): worker 'w1' is lost after t = "
+                              "[0-9.]+ s: continues on standby worker 's1'"));
+  }
+  EXPECT_EQ(read_file(scratch.path() / "remote/results.csv"), local);
+  EXPECT_THAT(read_file(scratch.path() / "remote/manifest.json"),
+              ContainsRegex("\"failovers\": 1[,}]"));
+  // one request per macro step on the standby, not one per member: at most the steps left after
+  // the kill, the replays (up to 100 steps each) and the images, where two members stepping
+  // apart would need twice the steps left
+  ASSERT_TRUE(s1.wait_for(" requests)")) << s1.output();
+  const std::string out = s1.output();
+  std::smatch count;
+  ASSERT_TRUE(std::regex_search(out, count, std::regex("; ([0-9]+) requests\\)"))) << out;
+  const long requests = std::stol(count[1].str());
+  const double steps_left =
+      7500.0 * (1.0 - static_cast<double>(kill_point) / static_cast<double>(local.size()));
+  EXPECT_LT(requests, 1.3 * steps_left + 300) << out;
 }
 
 TEST_F(failover_run, two_kills_in_a_row_with_two_standbys_leave_the_csv_unchanged) {

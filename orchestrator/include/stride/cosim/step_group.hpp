@@ -76,6 +76,8 @@ class local_step_group final : public step_group {
   std::optional<std::size_t> step(time_point t, std::int64_t index,
                                   std::span<const value_block* const> inputs,
                                   std::span<value_block* const> outputs) override;
+  /// Where each member stands now (after prepare() and every step).
+  std::span<const member_cache> caches() const noexcept { return caches_; }
 
  private:
   std::vector<component*> members_;

@@ -37,13 +37,16 @@ class remote_placement final : public cosim::placement_resolver {
                                            const cosim::placement_context& context) override;
   std::filesystem::path source_of(const cosim::component_spec& spec) const override;
   /// A group stepping on the members' worker, when all are proxies this placement made for one
-  /// worker and none has standby workers; nullptr otherwise.
+  /// worker; with standby workers, a group that fails over with its members. nullptr otherwise.
   std::unique_ptr<cosim::step_group> create_group(
       const std::vector<cosim::component*>& members) override;
   /// "failovers": the workers lost and replaced so far.
   std::vector<std::pair<std::string, long>> events() const override;
 
  private:
+  std::unique_ptr<cosim::step_group> create_failover_group(
+      const std::vector<cosim::component*>& members);
+
   dds_settings settings_;
   timeouts limits_;
   std::shared_ptr<client> link_;
