@@ -282,6 +282,7 @@ built_system build_system(const system_structure& structure, const build_options
   in_process_placement in_process;
   std::vector<std::unique_ptr<component>> components;
   std::vector<placement_resolver*> made_by;  // per component
+  for (const auto& resolver : options.placements) resolver->prepare(system);
   for (const auto& spec : system.components) {
     component_info info;
     info.name = spec.name;

@@ -1,7 +1,7 @@
 #include "stride/remote/remote_placement.hpp"
 
+#include <algorithm>
 #include <fstream>
-#include <iterator>
 #include <mutex>
 #include <set>
 
@@ -20,15 +20,23 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// One read into a buffer of the file's size: the robot FMU is 6 MB, and reading it character by
+// character took longer than the rest of a secure run's start-up.
 std::vector<std::byte> read_bytes(const fs::path& file, std::uint64_t limit) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw cosim::fmu_import_error("cannot read " + file.string());
-  std::vector<char> text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.size() > limit) {
+  std::error_code error;
+  const auto size = fs::file_size(file, error);
+  if (error) throw cosim::fmu_import_error("cannot read " + file.string() + ": " + error.message());
+  if (size > limit) {
     throw cosim::fmu_import_error(file.string() + " is larger than the import limit");
   }
-  const auto* p = reinterpret_cast<const std::byte*>(text.data());
-  return {p, p + text.size()};
+  std::vector<std::byte> bytes(size);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw cosim::fmu_import_error("cannot read " + file.string());
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size));
+  if (!in || in.gcount() != static_cast<std::streamsize>(size) || in.peek() != EOF) {
+    throw cosim::fmu_import_error("cannot read " + file.string() + " (it changed while read)");
+  }
+  return bytes;
 }
 
 // whether the instance of the kind chosen can give state images (failover needs them)
@@ -106,6 +114,17 @@ remote_placement::remote_placement(dds_settings settings, timeouts limits)
       shipped_(std::make_shared<shipped_archives>()) {}
 
 remote_placement::~remote_placement() = default;
+
+void remote_placement::prepare(const cosim::system_structure& system) noexcept {
+  const bool remote = std::ranges::any_of(
+      system.components, [](const cosim::component_spec& spec) { return !spec.worker.empty(); });
+  if (!remote || link_) return;
+  try {
+    link_ = std::make_shared<client>(settings_, limits_);
+  } catch (...) {
+    // create() joins again and reports the error with the component it concerns
+  }
+}
 
 std::unique_ptr<cosim::component> remote_placement::create(
     const cosim::component_spec& spec, const cosim::placement_context& context) {

@@ -390,6 +390,39 @@ TEST(cosim_system_builder, builds_the_chain_with_groups_parameters_and_decimatio
   EXPECT_EQ(algo.real_value(amp_vin3), 4.5);  // src.vec[3] = 1.5 * 3
 }
 
+// a placement that records what the builder asks of it
+class recording_placement final : public placement_resolver {
+ public:
+  std::vector<std::string> calls;
+  void prepare(const system_structure& system) noexcept override {
+    std::string names;
+    for (const auto& c : system.components) names += " " + c.name;
+    calls.push_back("prepare" + names);
+  }
+  std::unique_ptr<component> create(const component_spec& spec,
+                                    const placement_context& /*context*/) override {
+    calls.push_back("create " + spec.name);
+    return make_mock(spec);
+  }
+};
+
+// a placement's slow start (joining a network) may overlap the creation of every component
+TEST(cosim_system_builder, each_placement_is_prepared_with_the_whole_system_before_any_creation) {
+  const auto s = parse(
+      "<system><simulation stop='1' step='0.5'/><component name='a' fmu='m'/>"
+      "<replicate name='g' count='2'><component name='b' fmu='m'/></replicate></system>");
+  auto first = std::make_shared<recording_placement>();
+  auto second = std::make_shared<recording_placement>();
+  build_options o;
+  o.placements = {first, second};
+  o.log = quiet_log();
+  build_system(s, o);
+  // replicas expanded; the first placement takes every component, the second none
+  EXPECT_EQ(first->calls, (std::vector<std::string>{"prepare a b[1] b[2]", "create a",
+                                                    "create b[1]", "create b[2]"}));
+  EXPECT_EQ(second->calls, (std::vector<std::string>{"prepare a b[1] b[2]"}));
+}
+
 TEST(cosim_system_builder, ranges_pair_in_order_and_sizes_must_match) {
   auto s = parse(
       "<system><simulation stop='1' step='0.5'/><component name='a' fmu='m'/>"

@@ -32,6 +32,10 @@ struct placement_context {
 class placement_resolver {
  public:
   virtual ~placement_resolver() = default;
+  /// Called once with the whole system before any component is created, so that slow work of
+  /// this placement (e.g. joining a network) can go on while the others import their FMUs.
+  /// Must not throw: an error belongs to create(), with the spec it concerns.
+  virtual void prepare(const system_structure& /*system*/) noexcept {}
   /// The component for `spec`, or nullptr when `spec` is not this resolver's placement.
   /// \throws validation_error / fmu_import_error / component_error naming the spec's file and
   /// line.

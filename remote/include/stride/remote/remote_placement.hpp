@@ -28,6 +28,10 @@ class remote_placement final : public cosim::placement_resolver {
   explicit remote_placement(dds_settings settings, timeouts limits = {});
   ~remote_placement() override;
 
+  /// Joins the domain now when a component of `system` has a worker: DDS discovery and, with DDS
+  /// Security, the handshakes (which hold a fixed 0.1 s wait in Cyclone DDS) then go on while
+  /// the in-process components are imported. A failure is left for create() to report.
+  void prepare(const cosim::system_structure& system) noexcept override;
   /// The proxy of a component with a worker, nullptr for one without. Joins the domain on first
   /// use. With standby workers (the system's <failover>) the proxy fails over to one of them when
   /// its worker is lost (docs/failover.md). \throws cosim::fmu_import_error for an FMU that cannot
