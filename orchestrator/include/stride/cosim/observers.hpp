@@ -15,6 +15,10 @@
 
 namespace stride::cosim {
 
+namespace detail {
+class csv_row_writer;
+}
+
 /// Glob match with `*` (any run of characters) and `?` (one character).
 bool glob_match(std::string_view pattern, std::string_view text) noexcept;
 
@@ -64,8 +68,7 @@ class csv_recorder : public observer {
   std::vector<variable_id> variables_;
   std::optional<duration> interval_;
   std::vector<observed_variable> observed_;
-  std::FILE* out_ = nullptr;
-  std::string buffer_;
+  std::unique_ptr<detail::csv_row_writer> writer_;  // from attach() on
   std::size_t rows_ = 0;
   time_point last_row_{duration::min()};
   std::optional<time_point> continue_after_;
