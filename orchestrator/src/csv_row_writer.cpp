@@ -24,8 +24,14 @@ void append_double(std::string& out, double d) {
 }  // namespace
 
 csv_row_writer::csv_row_writer(std::FILE* out, std::filesystem::path file,
-                               std::vector<variable_type> columns, std::string first)
-    : file_(std::move(file)), columns_(std::move(columns)), out_(out), text_(std::move(first)) {
+                               std::vector<variable_type> columns, std::string first,
+                               bool own_thread)
+    : file_(std::move(file)),
+      columns_(std::move(columns)),
+      own_thread_(own_thread),
+      out_(out),
+      text_(std::move(first)) {
+  if (!own_thread_) return;
   try {
     thread_ = std::thread([this] { run(); });
   } catch (...) {
@@ -41,7 +47,12 @@ csv_row_writer::~csv_row_writer() {
     stop_ = true;
   }
   work_.notify_one();
-  if (thread_.joinable()) thread_.join();
+  if (thread_.joinable()) {
+    thread_.join();
+  } else if (out_ != nullptr) {
+    write_now(queued_);
+    write_text();
+  }
   if (out_ != nullptr) std::fclose(out_);
 }
 
@@ -61,6 +72,12 @@ void csv_row_writer::end_row() {
 }
 
 void csv_row_writer::hand_over() {
+  if (!own_thread_) {
+    throw_if_failed();
+    write_now(filling_);
+    throw_if_failed();
+    return;
+  }
   std::unique_lock lock(mutex_);
   space_.wait(lock, [&] { return queued_.size() < k_max_queued || !error_.empty(); });
   throw_if_failed();
@@ -77,6 +94,11 @@ void csv_row_writer::hand_over() {
 
 void csv_row_writer::flush() {
   if (!filling_.times.empty()) hand_over();
+  if (!own_thread_) {
+    flush_file();
+    throw_if_failed();
+    return;
+  }
   std::unique_lock lock(mutex_);
   const std::uint64_t ticket = ++flush_asked_;
   work_.notify_one();
@@ -92,7 +114,7 @@ void csv_row_writer::close() {
     stop_ = true;
   }
   work_.notify_one();
-  thread_.join();
+  if (thread_.joinable()) thread_.join();
   std::FILE* out = std::exchange(out_, nullptr);
   if (std::fclose(out) != 0) {
     throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
@@ -111,11 +133,7 @@ void csv_row_writer::run() {
       batch rows = std::move(queued_.front());
       queued_.pop_front();
       lock.unlock();
-      format(rows);
-      if (text_.size() >= k_write_size) write_text();
-      rows.times.clear();
-      rows.cells.clear();
-      rows.strings.clear();
+      write_now(rows);
       lock.lock();
       spare_.push_back(std::move(rows));
       space_.notify_one();
@@ -124,16 +142,32 @@ void csv_row_writer::run() {
     const std::uint64_t asked = flush_asked_;
     const bool stopping = stop_;
     lock.unlock();
-    write_text();
-    if (error_.empty() && std::fflush(out_) != 0) {
-      lock.lock();
-      error_ = "cannot write " + file_.string() + ": " + std::strerror(errno);
-      lock.unlock();
-    }
+    flush_file();
     lock.lock();
     flushed_ = asked;
     space_.notify_all();
     if (stopping && queued_.empty()) return;
+  }
+}
+
+void csv_row_writer::write_now(batch& rows) {
+  format(rows);
+  if (text_.size() >= k_write_size) write_text();
+  rows.times.clear();
+  rows.cells.clear();
+  rows.strings.clear();
+}
+
+void csv_row_writer::write_now(std::deque<batch>& queued) {
+  for (auto& rows : queued) write_now(rows);
+  queued.clear();
+}
+
+void csv_row_writer::flush_file() {
+  write_text();
+  if (error_.empty() && std::fflush(out_) != 0) {
+    std::lock_guard lock(mutex_);
+    error_ = "cannot write " + file_.string() + ": " + std::strerror(errno);
   }
 }
 

@@ -1,7 +1,7 @@
-// The rows of a CSV results file, formatted and written on a thread of their own. The run's
-// thread only copies a row's values; turning them into text is most of a row's cost (the
-// DARwIn-OP walk records 190 numbers every 8 ms step, about 12 µs of formatting), and on the
-// writer's thread it overlaps the next steps, or the round trip of a component on a worker.
+// The rows of a CSV results file, formatted and written on a thread of their own or on the run's.
+// Turning a row's values into text is most of its cost (the DARwIn-OP walk records 190 numbers
+// every 8 ms step, about 12 µs of formatting): on a thread of its own it overlaps the next steps
+// and the run's thread only copies the values.
 #ifndef STRIDE_COSIM_CSV_ROW_WRITER_HPP
 #define STRIDE_COSIM_CSV_ROW_WRITER_HPP
 
@@ -33,9 +33,10 @@ class csv_row_writer {
  public:
   /// Writes `first` (the header, or nothing when continuing a file), then the rows, to `out`,
   /// which it owns from now on; `columns` are the types of the values after the time, `file`
-  /// names the file in errors.
+  /// names the file in errors. Without `own_thread`, rows are formatted and written by the
+  /// caller, every few rows.
   csv_row_writer(std::FILE* out, std::filesystem::path file, std::vector<variable_type> columns,
-                 std::string first);
+                 std::string first, bool own_thread = true);
   /// Writes what is queued and closes the file, errors ignored: an unwinding run keeps what it
   /// can; the error that ends it is already on its way.
   ~csv_row_writer();
@@ -50,9 +51,10 @@ class csv_row_writer {
   /// Queues the row. Waits while the writer is far behind. \throws error naming the file when
   /// an earlier write failed.
   void end_row();
-  /// Returns once every row added is written and flushed to the file. \throws error as add().
+  /// Returns once every row added is written and flushed to the file. \throws error as end_row().
   void flush();
-  /// flush(), then closes the file. \throws error as add(), or when closing fails.
+  /// flush(), then closes the file; no rows after it. \throws error as end_row(), or when closing
+  /// fails.
   void close();
 
  private:
@@ -64,14 +66,18 @@ class csv_row_writer {
 
   void hand_over();
   void run();
+  void write_now(batch& rows);  // and empties `rows`
+  void write_now(std::deque<batch>& queued);
+  void flush_file();
   void format(const batch& rows);
   void write_text();
   void throw_if_failed() const;
 
   const std::filesystem::path file_;
   const std::vector<variable_type> columns_;
+  const bool own_thread_;
   std::FILE* out_;
-  std::string text_;  // formatted, not yet written (writer thread)
+  std::string text_;  // formatted, not yet written (the thread that writes)
   batch filling_;     // run's thread
 
   mutable std::mutex mutex_;

@@ -113,8 +113,8 @@ void csv_recorder::attach(execution& ex) {
   if (out == nullptr) throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
   std::vector<variable_type> columns;
   for (const auto& o : observed_) columns.push_back(o.type);
-  writer_ =
-      std::make_unique<detail::csv_row_writer>(out, file_, std::move(columns), std::move(header));
+  writer_ = std::make_unique<detail::csv_row_writer>(out, file_, std::move(columns),
+                                                     std::move(header), own_thread_);
 }
 
 void csv_recorder::continue_after(time_point after) {

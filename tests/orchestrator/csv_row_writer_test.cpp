@@ -1,5 +1,6 @@
-// The results file's writer thread: rows come out in order and complete, whatever the batching;
-// flush() means on disk; a write error reaches the run's thread; an unwinding run keeps its rows.
+// The results file's writer, on a thread of its own or on the caller's: rows come out in order
+// and complete, whatever the batching; flush() means written; a write error reaches the run's
+// thread; an unwinding run keeps its rows.
 #include "csv_row_writer.hpp"
 
 #include <gmock/gmock.h>
@@ -54,10 +55,13 @@ std::FILE* open_for_writing(const std::filesystem::path& file) {
   return out;
 }
 
-TEST(csv_row_writer, writes_every_row_in_order_through_many_batches) {
+// on a thread of its own (true) and on the caller's (false)
+class csv_row_writer_test : public ::testing::TestWithParam<bool> {};
+
+TEST_P(csv_row_writer_test, writes_every_row_in_order_through_many_batches) {
   temp_dir dir("stride-test-");
   const auto file = dir.path() / "r.csv";
-  csv_row_writer w(open_for_writing(file), file, k_columns, "time,x,n,b,s\n");
+  csv_row_writer w(open_for_writing(file), file, k_columns, "time,x,n,b,s\n", GetParam());
   std::string expected = "time,x,n,b,s\n";
   for (int i = 0; i < 5000; ++i) {  // enough to fill the writer's queue many times over
     add_row(w, i);
@@ -67,10 +71,10 @@ TEST(csv_row_writer, writes_every_row_in_order_through_many_batches) {
   EXPECT_EQ(read_text(file), expected);
 }
 
-TEST(csv_row_writer, after_flush_the_rows_so_far_are_in_the_file) {
+TEST_P(csv_row_writer_test, after_flush_the_rows_so_far_are_in_the_file) {
   temp_dir dir("stride-test-");
   const auto file = dir.path() / "r.csv";
-  csv_row_writer w(open_for_writing(file), file, k_columns, "");
+  csv_row_writer w(open_for_writing(file), file, k_columns, "", GetParam());
   std::string expected;
   for (int i = 0; i < 3; ++i) {  // fewer rows than one batch
     add_row(w, i);
@@ -88,12 +92,12 @@ TEST(csv_row_writer, after_flush_the_rows_so_far_are_in_the_file) {
   EXPECT_EQ(read_text(file), expected);
 }
 
-TEST(csv_row_writer, a_run_that_unwinds_keeps_its_rows) {
+TEST_P(csv_row_writer_test, a_run_that_unwinds_keeps_its_rows) {
   temp_dir dir("stride-test-");
   const auto file = dir.path() / "r.csv";
   std::string expected = "h\n";
   {
-    csv_row_writer w(open_for_writing(file), file, k_columns, "h\n");
+    csv_row_writer w(open_for_writing(file), file, k_columns, "h\n", GetParam());
     for (int i = 0; i < 21; ++i) {
       add_row(w, i);
       expected += expected_row(i);
@@ -102,10 +106,10 @@ TEST(csv_row_writer, a_run_that_unwinds_keeps_its_rows) {
   EXPECT_EQ(read_text(file), expected);
 }
 
-TEST(csv_row_writer, a_full_disk_is_an_error_naming_the_file) {
+TEST_P(csv_row_writer_test, a_full_disk_is_an_error_naming_the_file) {
   std::FILE* full = std::fopen("/dev/full", "wb");
   if (full == nullptr) GTEST_SKIP() << "no /dev/full on this machine";
-  csv_row_writer w(full, "results.csv", k_columns, "time,x,n,b,s\n");
+  csv_row_writer w(full, "results.csv", k_columns, "time,x,n,b,s\n", GetParam());
   std::string message;
   try {
     for (int i = 0; i < 100000; ++i) add_row(w, i);  // a failed write stops the run
@@ -117,6 +121,9 @@ TEST(csv_row_writer, a_full_disk_is_an_error_naming_the_file) {
   // and it stays failed: nothing later is taken for written
   EXPECT_THROW(w.flush(), error);
 }
+
+INSTANTIATE_TEST_SUITE_P(threads, csv_row_writer_test, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "own" : "callers"; });
 
 }  // namespace
 }  // namespace stride::cosim::detail

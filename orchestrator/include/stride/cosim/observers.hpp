@@ -48,6 +48,11 @@ class csv_recorder : public observer {
   /// or incomplete row is cut), and no row at or before `after` is written again. Call before
   /// the execution is initialized. (A resumed run: stride/cosim/run.hpp.)
   void continue_after(time_point after);
+  /// Formats and writes the rows on the run's thread, not on a thread of its own (call before
+  /// the execution is initialized). For a run whose thread mostly waits for workers' replies:
+  /// a second busy thread beside it delays its answer to them by more than the formatting
+  /// costs (BENCHMARKS.md).
+  void write_on_run_thread() noexcept { own_thread_ = false; }
 
   void attach(execution& ex) override;
   void simulation_initialized(const execution& ex, time_point t) override;
@@ -69,6 +74,7 @@ class csv_recorder : public observer {
   std::optional<duration> interval_;
   std::vector<observed_variable> observed_;
   std::unique_ptr<detail::csv_row_writer> writer_;  // from attach() on
+  bool own_thread_ = true;
   std::size_t rows_ = 0;
   time_point last_row_{duration::min()};
   std::optional<time_point> continue_after_;
