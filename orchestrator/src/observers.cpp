@@ -8,7 +8,6 @@
 #include <cstring>
 #include <fstream>
 
-#include "csv_row_writer.hpp"
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
 
@@ -51,6 +50,12 @@ void append_csv_field(std::string& out, std::string_view s) {
   out += '"';
 }
 
+void append_double(std::string& out, double d) {
+  char buf[32];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d);
+  if (ec == std::errc()) out.append(buf, end);
+}
+
 }  // namespace
 
 csv_recorder::csv_recorder(std::filesystem::path file, std::vector<variable_id> variables,
@@ -73,8 +78,12 @@ std::shared_ptr<csv_recorder> csv_recorder::from_patterns(std::filesystem::path 
   return std::make_shared<csv_recorder>(std::move(file), std::move(vars), interval);
 }
 
-// the writer keeps what an unwinding run can keep
-csv_recorder::~csv_recorder() = default;
+csv_recorder::~csv_recorder() {
+  // an unwinding run: keep what can be kept, the error that ends the run is already on its way
+  if (out_ == nullptr) return;
+  if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+  std::fclose(out_);
+}
 
 void csv_recorder::attach(execution& ex) {
   auto& algo = ex;
@@ -104,17 +113,19 @@ void csv_recorder::attach(execution& ex) {
   header += '\n';
   if (continue_after_) {
     keep_rows_until(*continue_after_, header);
+    out_ = std::fopen(file_.c_str(), "ab");
+    if (out_ == nullptr) {
+      throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+    }
     last_row_ = *continue_after_;
-    header.clear();  // the file has it
-  } else if (!file_.parent_path().empty()) {
-    std::filesystem::create_directories(file_.parent_path());
+    return;
   }
-  std::FILE* out = std::fopen(file_.c_str(), continue_after_ ? "ab" : "wb");
-  if (out == nullptr) throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
-  std::vector<variable_type> columns;
-  for (const auto& o : observed_) columns.push_back(o.type);
-  writer_ = std::make_unique<detail::csv_row_writer>(out, file_, std::move(columns),
-                                                     std::move(header), own_thread_);
+  if (!file_.parent_path().empty()) std::filesystem::create_directories(file_.parent_path());
+  out_ = std::fopen(file_.c_str(), "wb");
+  if (out_ == nullptr) {
+    throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+  }
+  buffer_ = std::move(header);
 }
 
 void csv_recorder::continue_after(time_point after) {
@@ -147,34 +158,50 @@ void csv_recorder::keep_rows_until(time_point after, const std::string& header) 
 }
 
 void csv_recorder::write_row(const execution& ex, time_point t) {
-  if (t == last_row_ || writer_ == nullptr) return;
+  if (t == last_row_ || out_ == nullptr) return;
   if (continue_after_ && t <= *continue_after_) return;  // the earlier part has these rows
   last_row_ = t;
-  const std::span<detail::csv_cell> cells = writer_->begin_row(t);
-  for (std::size_t i = 0; i < observed_.size(); ++i) {
-    const observed_variable& o = observed_[i];
+  const auto& algo = ex;
+  buffer_ += format_seconds(t);
+  for (const auto& o : observed_) {
+    buffer_ += ',';
     switch (o.type) {
       case variable_type::real:
-        cells[i].real = ex.real_value(o);
+        append_double(buffer_, algo.real_value(o));
         break;
       case variable_type::integer:
       case variable_type::enumeration:
-        cells[i].integer = ex.integer_value(o);
+        buffer_ += std::to_string(algo.integer_value(o));
         break;
       case variable_type::boolean:
-        cells[i].boolean = ex.boolean_value(o);
+        buffer_ += algo.boolean_value(o) ? '1' : '0';
         break;
-      case variable_type::string:
-        writer_->add_string(ex.string_value(o));
+      case variable_type::string: {
+        // always quoted so an empty string stays a field
+        buffer_ += '"';
+        for (char c : algo.string_value(o)) {
+          if (c == '"') buffer_ += '"';
+          buffer_ += c;
+        }
+        buffer_ += '"';
         break;
+      }
     }
   }
-  writer_->end_row();
+  buffer_ += '\n';
   ++rows_;
+  if (buffer_.size() > (1u << 16)) flush();
 }
 
 void csv_recorder::flush() {
-  if (writer_ != nullptr) writer_->flush();
+  if (out_ == nullptr) return;
+  // a full disk must end the run with an error, not leave a silently truncated file
+  const bool written =
+      buffer_.empty() || std::fwrite(buffer_.data(), 1, buffer_.size(), out_) == buffer_.size();
+  buffer_.clear();
+  if (!written || std::fflush(out_) != 0) {
+    throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+  }
 }
 
 void csv_recorder::simulation_initialized(const execution& ex, time_point t) {
@@ -188,7 +215,12 @@ void csv_recorder::step_complete(const execution& ex, std::int64_t /*step*/, tim
 
 void csv_recorder::simulation_ended(const execution& /*ex*/, time_point /*t*/,
                                     const std::string& /*error*/) {
-  if (writer_ != nullptr) writer_->close();
+  flush();
+  if (out_ != nullptr) {
+    const bool closed = std::fclose(out_) == 0;
+    out_ = nullptr;
+    if (!closed) throw error("cannot write " + file_.string() + ": " + std::strerror(errno));
+  }
 }
 
 double real_time_factor(duration simulated, double wall_seconds) noexcept {

@@ -388,21 +388,14 @@ run_report run_system(system_structure system, const run_options& options) {
   const auto timer = std::make_shared<wall_timer>();
   ex.add_observer(timer);
   std::vector<std::shared_ptr<csv_recorder>> recorders;  // flushed before a checkpoint
-  // a run that mostly waits for workers formats its rows itself (write_on_run_thread)
-  const bool on_workers = std::any_of(built.components.begin(), built.components.end(),
-                                      [](const component_info& c) { return !c.worker.empty(); });
-  const auto recorder_for = [&](std::filesystem::path file, std::vector<variable_id> variables,
-                                std::optional<duration> interval) {
-    auto recorder = std::make_shared<csv_recorder>(std::move(file), std::move(variables), interval);
-    if (on_workers) recorder->write_on_run_thread();
-    if (saved) recorder->continue_after(saved->time);  // the rows so far stay
-    recorders.push_back(recorder);
-    return recorder;
-  };
   if (system.record.enabled) {
     report.results_file = report.output_dir / system.record.file;
     try {
-      ex.add_observer(recorder_for(report.results_file, recorded, system.record.interval));
+      auto recorder =
+          std::make_shared<csv_recorder>(report.results_file, recorded, system.record.interval);
+      if (saved) recorder->continue_after(saved->time);  // the rows so far stay
+      recorders.push_back(recorder);
+      ex.add_observer(std::move(recorder));
     } catch (const validation_error& e) {
       const std::string where = system.record.where.str();
       throw validation_error((where.empty() ? "" : where + ": ") + e.what());
@@ -410,7 +403,11 @@ run_report run_system(system_structure system, const run_options& options) {
   }
   for (std::size_t i = 0; i < extras.size(); ++i) {
     report.extra_files.push_back(report.output_dir / options.extra_records[i].file);
-    ex.add_observer(recorder_for(report.extra_files.back(), extras[i].first, extras[i].second));
+    auto recorder = std::make_shared<csv_recorder>(report.extra_files.back(), extras[i].first,
+                                                   extras[i].second);
+    if (saved) recorder->continue_after(saved->time);
+    recorders.push_back(recorder);
+    ex.add_observer(std::move(recorder));
   }
   if (options.progress) {
     ex.add_observer(std::make_shared<progress_display>(built.stop, stderr, std::nullopt,

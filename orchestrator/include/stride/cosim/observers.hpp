@@ -15,10 +15,6 @@
 
 namespace stride::cosim {
 
-namespace detail {
-class csv_row_writer;
-}
-
 /// Glob match with `*` (any run of characters) and `?` (one character).
 bool glob_match(std::string_view pattern, std::string_view text) noexcept;
 
@@ -48,11 +44,6 @@ class csv_recorder : public observer {
   /// or incomplete row is cut), and no row at or before `after` is written again. Call before
   /// the execution is initialized. (A resumed run: stride/cosim/run.hpp.)
   void continue_after(time_point after);
-  /// Formats and writes the rows on the run's thread, not on a thread of its own (call before
-  /// the execution is initialized). For a run whose thread mostly waits for workers' replies:
-  /// a second busy thread beside it delays its answer to them by more than the formatting
-  /// costs (BENCHMARKS.md).
-  void write_on_run_thread() noexcept { own_thread_ = false; }
 
   void attach(execution& ex) override;
   void simulation_initialized(const execution& ex, time_point t) override;
@@ -73,8 +64,8 @@ class csv_recorder : public observer {
   std::vector<variable_id> variables_;
   std::optional<duration> interval_;
   std::vector<observed_variable> observed_;
-  std::unique_ptr<detail::csv_row_writer> writer_;  // from attach() on
-  bool own_thread_ = true;
+  std::FILE* out_ = nullptr;
+  std::string buffer_;
   std::size_t rows_ = 0;
   time_point last_row_{duration::min()};
   std::optional<time_point> continue_after_;
