@@ -4,13 +4,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "recorded_frames.hpp"
+#include "stride/cosim/archive.hpp"
 #include "stride/cosim/error.hpp"
 
 namespace stride::viewer {
 namespace {
 
 const std::filesystem::path k_csv = std::filesystem::path(STRIDE_TEST_DATA_DIR) / "frames.csv";
+using cosim::temp_dir;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
@@ -37,6 +41,20 @@ TEST(recorded_frames, a_frame_rate_keeps_the_first_row_of_each_bin_and_the_fall)
   EXPECT_THAT(read_frames(k_csv, "r", {1}, {}, s).t, ElementsAre(0, 0.12, 0.2));
   s.fps = 2;  // one bin: 0, and the fall
   EXPECT_THAT(read_frames(k_csv, "r", {1}, {}, s).t, ElementsAre(0, 0.12));
+}
+
+// a time far beyond any integer (a file is input: any finite number may be in it) still falls
+// into a bin of its own, each row after the first opening a new one
+TEST(recorded_frames, times_beyond_an_integers_range_are_binned_too) {
+  temp_dir dir("stride-frames-");
+  const auto csv = dir.path() / "far.csv";
+  std::ofstream(csv) << "time,r.base_x,r.base_y,r.base_z,r.roll,r.pitch,r.yaw,r.joint_angle[1]\n"
+                        "1e300,0,0,0.3,0,0,0,0.1\n"
+                        "2e300,0,0,0.3,0,0,0,0.2\n"
+                        "2e300,0,0,0.3,0,0,0,0.3\n";
+  frame_selection s;
+  s.fps = 25;
+  EXPECT_THAT(read_frames(csv, "r", {1}, {}, s).t, ElementsAre(1e300, 2e300));
 }
 
 TEST(recorded_frames, a_window_and_the_spans_of_an_episode_column) {

@@ -79,11 +79,12 @@ recorded_frames read_frames(const fs::path& file, const std::string& prefix,
   f.state.resize(state_columns.size());
   for (std::size_t s = 0; s < state_columns.size(); ++s) f.state[s].first = state_columns[s];
 
-  // decimation: the first row of each 1/fps bin of simulated time
+  // decimation: the first row of each 1/fps bin of simulated time (bins kept as doubles: a file
+  // may hold any finite time, far beyond an integer's range)
   const auto bin = [&](double t) {
-    return selection.fps > 0 ? static_cast<long long>(std::floor(t * selection.fps + 1e-6)) : 0;
+    return selection.fps > 0 ? std::floor(t * selection.fps + 1e-6) : 0.0;
   };
-  std::optional<long long> last_bin;
+  std::optional<double> last_bin;
   bool was_fallen = false;
   std::size_t line_number = 1;
   std::vector<double> row(header.size());
