@@ -278,7 +278,10 @@ TEST_F(keystore_test, governance_follows_the_schema_order_and_the_protection) {
          {"discovery_protection_kind", "liveliness_protection_kind", "rtps_protection_kind"}) {
       EXPECT_STREQ(rule->FirstChildElement(e)->GetText(), kind) << e;
     }
-    EXPECT_STREQ(topic->FirstChildElement("data_protection_kind")->GetText(), kind);
+    // each message is protected once, as a whole: not its submessages and payloads again
+    for (const char* e : {"metadata_protection_kind", "data_protection_kind"}) {
+      EXPECT_STREQ(topic->FirstChildElement(e)->GetText(), "NONE") << e;
+    }
     EXPECT_STREQ(rule->FirstChildElement("allow_unauthenticated_participants")->GetText(), "false");
     EXPECT_THAT(show(dir), HasSubstr(level == protection::encrypt ? "encrypt" : "sign"));
   }

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# The walk with the robot on a worker (models/distributed/walk-robot-on-worker.xml), run REPEAT
+# times to STOP seconds of simulated time. Prints the median and range of the whole process's wall
+# time and of the simulation loop alone (the manifest's wall_time_s). The worker keeps the robot
+# FMU from a first, untimed run, as it does between the runs of a study.
+# SECURITY: none (default) or encrypt (worker and run with identities of one keystore).
+# BUILDS: one build directory, or several separated by commas; the runs then take turns, so that
+# the machine's changes of speed from minute to minute fall on each build alike. Build k has its
+# own worker on domain DOMAIN + k and, with security, its own keystore.
+# usage: bench/remote/walk.sh [REPEAT] [BUILDS] [DOMAIN] [SECURITY] [STOP]
+#        (defaults 15, build/, 174, none, 60)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/../.." && pwd)"
+repeat="${1:-15}"
+IFS=, read -r -a builds <<< "${2:-$root/build}"
+domain="${3:-174}"
+security="${4:-none}"
+stop="${5:-60}"
+for b in "${builds[@]}"; do
+  [ -x "$b/bin/stride" ] || { echo "walk: $b/bin/stride not found (build first)" >&2; exit 1; }
+done
+out="$(mktemp -d)"
+workers=()
+trap 'for w in "${workers[@]}"; do kill -TERM "$w" 2>/dev/null; done; wait; rm -rf "$out"' EXIT
+case "$security" in
+  none | encrypt) ;;
+  *) echo "walk: SECURITY is none or encrypt, not '$security'" >&2; exit 1 ;;
+esac
+sed -e "s/stop=\"60\"/stop=\"$stop\"/" "$root/models/distributed/walk-robot-on-worker.xml" \
+  > "$out/walk.xml"
+grep -q "stop=\"$stop\"" "$out/walk.xml" || { echo "walk: cannot set the stop time" >&2; exit 1; }
+
+# each build has a worker of its own (on domain DOMAIN + its index) and, with security, a keystore
+# made by its own `stride security init`: a change on either side is measured whole
+run_args=()
+for k in "${!builds[@]}"; do
+  stride="${builds[$k]}/bin/stride" d=$((domain + k)) worker_args=()
+  run_args[k]="--domain $d --quiet"
+  if [ "$security" = encrypt ]; then
+    "$stride" security init "$out/ks$k" --domains "$d" > /dev/null
+    for id in w1 orchestrator; do "$stride" security add "$out/ks$k" "$id" > /dev/null; done
+    worker_args=(--security "$out/ks$k/w1")
+    run_args[k]+=" --security $out/ks$k/orchestrator"
+  fi
+  "$stride" worker --name w1 --domain "$d" "${worker_args[@]}" > "$out/worker$k.log" 2>&1 &
+  workers+=($!)
+  for _ in $(seq 100); do grep -q ready "$out/worker$k.log" && break; sleep 0.1; done
+  grep -q ready "$out/worker$k.log" || { cat "$out/worker$k.log" >&2; exit 1; }
+done
+
+# appends "whole loop" seconds of one run of build number $1 to $2
+run() {
+  local start end
+  start=$EPOCHREALTIME
+  # shellcheck disable=SC2086 # the arguments hold no spaces
+  "${builds[$1]}/bin/stride" run "$out/walk.xml" ${run_args[$1]} --output "$out/run" \
+    > "$out/last.txt" 2>&1 ||
+    { cat "$out/last.txt" >&2; echo "walk: a run failed" >&2; exit 1; }
+  end=$EPOCHREALTIME
+  python3 - "$start" "$end" "$out/run/manifest.json" >> "$2" << 'EOF'
+import json, sys
+print(float(sys.argv[2]) - float(sys.argv[1]), json.load(open(sys.argv[3]))["wall_time_s"])
+EOF
+  rm -rf "$out/run"
+}
+for k in "${!builds[@]}"; do run "$k" /dev/null; done  # ships the FMU
+for ((i = 1; i <= repeat; ++i)); do
+  for k in "${!builds[@]}"; do run "$k" "$out/times.$k"; done
+done
+for k in "${!builds[@]}"; do
+  python3 - "$out/times.$k" "${builds[$k]}" "$security" "$stop" << 'EOF'
+import statistics, sys
+rows = [tuple(map(float, l.split())) for l in open(sys.argv[1])]
+whole, loop = ([r[i] for r in rows] for i in (0, 1))
+print(f"{sys.argv[2]}: walk to {sys.argv[4]} s, security {sys.argv[3]}, {len(rows)} runs: "
+      f"whole {statistics.median(whole):.3f} s ({min(whole):.3f}-{max(whole):.3f}), "
+      f"loop {statistics.median(loop):.3f} s ({min(loop):.3f}-{max(loop):.3f}), "
+      f"{float(sys.argv[4]) / statistics.median(whole):.1f}x real time")
+EOF
+done
