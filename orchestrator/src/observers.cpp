@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 #include "stride/common/text.hpp"
 #include "stride/cosim/error.hpp"
@@ -79,8 +80,13 @@ std::shared_ptr<csv_recorder> csv_recorder::from_patterns(std::filesystem::path 
 }
 
 csv_recorder::~csv_recorder() {
+  withdraw_work(*this);
   // an unwinding run: keep what can be kept, the error that ends the run is already on its way
   if (out_ == nullptr) return;
+  try {
+    format_row();
+  } catch (...) {  // NOLINT(bugprone-empty-catch): the row is lost, the file kept
+  }
   if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
   std::fclose(out_);
 }
@@ -161,40 +167,83 @@ void csv_recorder::write_row(const execution& ex, time_point t) {
   if (t == last_row_ || out_ == nullptr) return;
   if (continue_after_ && t <= *continue_after_) return;  // the earlier part has these rows
   last_row_ = t;
-  const auto& algo = ex;
-  buffer_ += format_seconds(t);
+  format_row();  // the row before, should no wait have come to format it
+  copy_row(ex, t);
+  defer_work(*this);
+  if (buffer_.size() > (1u << 16)) flush();
+}
+
+void csv_recorder::copy_row(const execution& ex, time_point t) {
+  row_.t = t;
+  row_.reals.clear();
+  row_.integers.clear();
+  row_.booleans.clear();
+  row_.strings.clear();
+  for (const auto& o : observed_) {
+    switch (o.type) {
+      case variable_type::real:
+        row_.reals.push_back(ex.real_value(o));
+        break;
+      case variable_type::integer:
+      case variable_type::enumeration:
+        row_.integers.push_back(ex.integer_value(o));
+        break;
+      case variable_type::boolean:
+        row_.booleans.push_back(ex.boolean_value(o));
+        break;
+      case variable_type::string:
+        row_.strings.push_back(ex.string_value(o));
+        break;
+    }
+  }
+  row_.pending = true;
+  ++rows_;
+}
+
+void csv_recorder::format_row() {
+  if (deferred_error_) std::rethrow_exception(std::exchange(deferred_error_, nullptr));
+  if (!row_.pending) return;
+  row_.pending = false;
+  buffer_ += format_seconds(row_.t);
+  std::size_t real = 0, integer = 0, boolean = 0, string = 0;
   for (const auto& o : observed_) {
     buffer_ += ',';
     switch (o.type) {
       case variable_type::real:
-        append_double(buffer_, algo.real_value(o));
+        append_double(buffer_, row_.reals[real++]);
         break;
       case variable_type::integer:
       case variable_type::enumeration:
-        buffer_ += std::to_string(algo.integer_value(o));
+        buffer_ += std::to_string(row_.integers[integer++]);
         break;
       case variable_type::boolean:
-        buffer_ += algo.boolean_value(o) ? '1' : '0';
+        buffer_ += row_.booleans[boolean++] ? '1' : '0';
         break;
-      case variable_type::string: {
+      case variable_type::string:
         // always quoted so an empty string stays a field
         buffer_ += '"';
-        for (char c : algo.string_value(o)) {
+        for (char c : row_.strings[string++]) {
           if (c == '"') buffer_ += '"';
           buffer_ += c;
         }
         buffer_ += '"';
         break;
-      }
     }
   }
   buffer_ += '\n';
-  ++rows_;
-  if (buffer_.size() > (1u << 16)) flush();
+}
+
+void csv_recorder::do_deferred_work() noexcept {
+  try {
+    format_row();
+  } catch (...) {
+    deferred_error_ = std::current_exception();
+  }
 }
 
 void csv_recorder::flush() {
   if (out_ == nullptr) return;
+  format_row();
   // a full disk must end the run with an error, not leave a silently truncated file
   const bool written =
       buffer_.empty() || std::fwrite(buffer_.data(), 1, buffer_.size(), out_) == buffer_.size();

@@ -8,6 +8,7 @@
 
 #include "execution_fixtures.hpp"
 #include "stride/cosim/archive.hpp"
+#include "stride/cosim/deferred_work.hpp"
 #include "stride/cosim/error.hpp"
 #include "stride/cosim/observers.hpp"
 
@@ -49,6 +50,52 @@ TEST(cosim_observers, csv_recorder_writes_full_names_and_every_type) {
             "0,0,0,0,\"\"\n"
             "0.5,0.2,-2,1,\"a,\"\"b\"\"\"\n"
             "1,0.4,-4,1,\"a,\"\"b\"\"\"\n");
+}
+
+// A component on a worker lets the run format the last row while it waits for the reply
+// (deferred work, done here within every step): each row still holds the values of its own
+// time, not those the step has changed, and rows left undone at the end are written.
+TEST(cosim_observers, csv_recorder_rows_formatted_while_a_step_waits_hold_their_own_values) {
+  const auto record = [](bool wait_in_step, std::optional<duration> interval) {
+    temp_dir dir("stride-test-");
+    execution ex(std::make_unique<fixed_step_algorithm>(250 * k_ms, algorithm_kind::gauss_seidel),
+                 time_point{}, quiet_log());
+    auto m = std::make_unique<mock_component>("m");
+    m->real("x", causality::output);
+    m->add("n", variable_type::integer, causality::output);
+    m->add("flag", variable_type::boolean, causality::output);
+    m->add("label", variable_type::string, causality::output);
+    m->on_step = [wait_in_step](mock_component& self, time_point t, duration) {
+      self.r("x") += 0.1;
+      self.i("n") -= 1;
+      self.b("flag") = !self.b("flag");
+      self.s("label") = "at \"" + format_seconds(t) + "\"";
+      // the component's values have moved on: the row of the step before must not
+      if (wait_in_step) run_deferred_work();
+      return step_result::complete;
+    };
+    ex.add_component(std::move(m));
+    const auto csv = dir.path() / "r.csv";
+    auto recorder = csv_recorder::from_patterns(csv, ex, {"m.*"}, interval);
+    ex.add_observer(recorder);
+    ex.simulate_until(time_point(std::chrono::seconds(1)));
+    EXPECT_EQ(recorder->rows_written(), interval ? 3u : 5u);
+    ex.end();
+    std::ifstream in(csv);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const std::string every_step =
+      "time,m.x,m.n,m.flag,m.label\n"
+      "0,0,0,0,\"\"\n"
+      "0.25,0.1,-1,1,\"at \"\"0\"\"\"\n"
+      "0.5,0.2,-2,0,\"at \"\"0.25\"\"\"\n"
+      "0.75,0.30000000000000004,-3,1,\"at \"\"0.5\"\"\"\n"
+      "1,0.4,-4,0,\"at \"\"0.75\"\"\"\n";
+  EXPECT_EQ(record(true, std::nullopt), every_step);
+  EXPECT_EQ(record(false, std::nullopt), every_step);
+  EXPECT_EQ(record(true, 500 * k_ms), record(false, 500 * k_ms));
 }
 
 // a resumed run continues the results file of its first part: the rows up to the moment it

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "stride/cosim/deferred_work.hpp"
 #include "stride/cosim/execution.hpp"
 
 namespace stride::cosim {
@@ -25,8 +27,10 @@ std::vector<variable_id> find_variables(const execution& ex, std::string_view pa
 
 /// Writes one CSV row per recording interval: `time` first, then one column per variable,
 /// headed by its full name "comp.var" (FMPy/cosim style; Booleans as 0/1, strings quoted,
-/// doubles in shortest round-trip form).
-class csv_recorder : public observer {
+/// doubles in shortest round-trip form). A row's values are copied when it is recorded and
+/// turned into text as deferred work (stride/cosim/deferred_work.hpp): while the run waits for
+/// a worker's reply to the next step, or else when the next row comes.
+class csv_recorder : public observer, private deferred_work {
  public:
   /// Records `variables` (an empty list records every output) every `interval` (nullopt = every
   /// base step; must be a multiple of the base step).
@@ -51,13 +55,27 @@ class csv_recorder : public observer {
   void simulation_ended(const execution& ex, time_point t, const std::string& error) override;
 
   const std::filesystem::path& file() const noexcept { return file_; }
+  /// Rows recorded so far, the one not yet formatted included.
   std::size_t rows_written() const noexcept { return rows_; }
   /// Writes the buffered rows (before a checkpoint); \throws error naming the file when the
   /// write fails.
   void flush();
 
  private:
+  // the latest row's values, as they were when it was recorded
+  struct row_values {
+    bool pending = false;
+    time_point t{};
+    std::vector<double> reals;
+    std::vector<int> integers;
+    std::vector<bool> booleans;
+    std::vector<std::string> strings;
+  };
+
   void write_row(const execution& ex, time_point t);
+  void copy_row(const execution& ex, time_point t);
+  void format_row();
+  void do_deferred_work() noexcept override;
   void keep_rows_until(time_point after, const std::string& header);
 
   std::filesystem::path file_;
@@ -66,6 +84,8 @@ class csv_recorder : public observer {
   std::vector<observed_variable> observed_;
   std::FILE* out_ = nullptr;
   std::string buffer_;
+  row_values row_;
+  std::exception_ptr deferred_error_;  // of formatting as deferred work, thrown by the next call
   std::size_t rows_ = 0;
   time_point last_row_{duration::min()};
   std::optional<time_point> continue_after_;
