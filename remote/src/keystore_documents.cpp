@@ -162,6 +162,21 @@ void read_domains(const XMLElement* domains, std::set<int>& ids) {
   }
 }
 
+// whether a domain rule's topic rules protect submessages or payloads (any kind but NONE)
+bool protects_inside(const XMLElement* domain_rule) {
+  const XMLElement* topics = domain_rule->FirstChildElement("topic_access_rules");
+  if (topics == nullptr) return false;
+  for (const XMLElement* t = topics->FirstChildElement("topic_rule"); t;
+       t = t->NextSiblingElement("topic_rule")) {
+    for (const char* layer : {"metadata_protection_kind", "data_protection_kind"}) {
+      const XMLElement* kind = t->FirstChildElement(layer);
+      if (kind != nullptr && kind->GetText() != nullptr && std::string(kind->GetText()) != "NONE")
+        return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 // Every message between two participants is protected once, as a whole (rtps_protection_kind),
@@ -249,6 +264,7 @@ governance_summary read_governance(const std::string& xml) {
   for (const XMLElement* r = required(rules, "domain_rule"); r;
        r = r->NextSiblingElement("domain_rule")) {
     read_domains(required(r, "domains"), ids);
+    summary.protected_inside = summary.protected_inside || protects_inside(r);
   }
   const std::string kind = text(required(required(rules, "domain_rule"), "rtps_protection_kind"));
   if (kind.rfind("ENCRYPT", 0) == 0) {

@@ -39,6 +39,9 @@ std::vector<std::string> permissions_subjects(const std::string& xml);
 struct governance_summary {
   std::vector<int> domains;
   protection level = protection::encrypt;
+  // submessages or payloads protected again inside each protected message, as keystores made
+  // before each message was protected once did: slower, no safer (governance_xml)
+  bool protected_inside = false;
 };
 /// The domains and protection of a governance document's domain rules.
 governance_summary read_governance(const std::string& xml);

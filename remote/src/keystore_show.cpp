@@ -80,7 +80,13 @@ std::string show_keystore(const fs::path& dir) {
   row(out, "valid", validity(info));
   row(out, "CA key", "private/" + key_mode(dir / "private" / "ca.key.pem"));
   row(out, "domains", format_domains(governance.domains) + " (governance.p7s, signed by the CA)");
-  row(out, "protection", governance.level == protection::encrypt ? "encrypt" : "sign");
+  row(out, "protection",
+      std::string(governance.level == protection::encrypt ? "encrypt" : "sign") +
+          (governance.protected_inside
+               ? ", each message's submessages and payloads protected again inside it (11-17 % "
+                 "slower, and no safer than a new keystore of `stride security init`, which "
+                 "protects each message once; docs/distributed.md)"
+               : ""));
   const auto identities = identity_dirs(dir);
   row(out, "identities",
       identities.empty() ? "none (add one with `stride security add`)"

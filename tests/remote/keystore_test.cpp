@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 
+#include "keystore_x509.hpp"
 #include "stride/remote/keystore.hpp"
 
 namespace stride::remote::keystore {
@@ -335,6 +336,26 @@ TEST_F(keystore_test, show_describes_keystores_and_identities) {
   fs::remove(id / "permissions_ca.cert.pem");
   EXPECT_THAT(error_of([&] { show(id); }), HasSubstr((id / "permissions_ca.cert.pem").string()));
   EXPECT_THAT(error_of([&] { show(scratch); }), HasSubstr("neither a keystore"));
+}
+
+// A keystore whose governance also protects submessages and payloads inside each message (as
+// keystores once did) still works; `show` says it is slower than a new one.
+TEST_F(keystore_test, show_tells_a_governance_that_protects_inside_each_message) {
+  const fs::path dir = keystore("ks");
+  EXPECT_THAT(show(dir), Not(HasSubstr("protected again")));
+  std::string xml = read(dir / "governance.xml");
+  for (const std::string layer : {"metadata_protection_kind", "data_protection_kind"}) {
+    const std::string none = "<" + layer + ">NONE<";
+    ASSERT_NE(xml.find(none), std::string::npos) << layer;
+    xml.replace(xml.find(none), none.size(), "<" + layer + ">ENCRYPT<");
+  }
+  const auto ca = x509::certificate_from_pem(read(dir / "ca.cert.pem"));
+  const auto ca_key = x509::key_from_pem(read(dir / "private" / "ca.key.pem"));
+  std::ofstream(dir / "governance.p7s", std::ios::binary)
+      << x509::smime_sign(xml, ca.get(), ca_key.get());
+  const std::string text = show(dir);
+  EXPECT_THAT(text, HasSubstr("encrypt, each message's submessages and payloads protected again"));
+  EXPECT_THAT(text, HasSubstr("0,3-5"));
 }
 
 TEST(keystore_domains, parse_and_format_domain_lists) {
