@@ -5,6 +5,7 @@
 #   P/share/stride/examples/         components built against the package (docs/tutorial.md)
 #   P/include/stride/{sdk,fmi2,fmi3}/ the component SDK headers (and stride/common/bytes.hpp)
 #   P/lib/libstride_sdk.a, P/lib/stride/objects/  the SDK library and its two object sets
+#   P/lib/stride/libstride_dds_auth.so  the wrapper of Cyclone's authentication plugin (distributed.md)
 #   P/lib/cmake/Stride/              StrideConfig.cmake, StrideConfigVersion.cmake, StrideFmu.cmake
 # An installed `stride` finds the bundled FMUs and models through its own location
 # (bin/../share/stride), so no STRIDE_FMU_PATH is needed.

@@ -11,6 +11,7 @@
 
 #include "stride/cosim/deferred_work.hpp"
 #include "stride/cosim/error.hpp"
+#include "stride/remote/identity.hpp"
 
 namespace stride::remote {
 
@@ -113,10 +114,14 @@ dds_entity_t client::connect(const std::string& worker) {
   while (announcement_of(worker) == 0) {
     if (clock::now() >= until) {
       // a worker behind DDS Security is invisible to a run it does not trust, and the other way
+      const std::filesystem::path identity = effective_identity(settings_);
       const std::string security =
-          effective_identity(settings_).empty()
+          identity.empty()
               ? "; a worker with --security is out of reach of a run without it"
-              : "; with --security, the worker's identity must come from the same keystore";
+              : "; a worker is out of reach of this run's identity " + identity.string() +
+                    " unless its own comes from the same keystore, the one whose CA is " +
+                    identity_files{identity}.identity_ca().string() +
+                    " (make it with `stride security add KEYSTORE " + worker + "`)";
       throw std::runtime_error("worker '" + worker + "' did not appear on DDS domain " +
                                std::to_string(settings_.domain) + " within " +
                                seconds.substr(0, seconds.find('.') + 2) +

@@ -78,13 +78,7 @@ dds_entity_t create_participant(int domain, const fs::path& identity) {
                  "cannot join DDS domain " + std::to_string(domain));
   }
   dds_qos_t* qos = dds_create_qos();
-  try {
-    add_security(qos, identity);
-    check_identity(identity, domain);
-  } catch (...) {
-    dds_delete_qos(qos);
-    throw;
-  }
+  add_security(qos, identity);
   const dds_entity_t p = dds_create_participant(static_cast<dds_domainid_t>(domain), qos, nullptr);
   dds_delete_qos(qos);
   // Cyclone's log (stderr) has said which file or check failed
@@ -103,6 +97,11 @@ entity make_participant(const dds_settings& settings) {
                              " is out of range (0..230)");
   }
   const fs::path identity = effective_identity(settings);
+  if (!identity.empty()) {
+    // before this process touches the domain: with a bad identity it joins nothing at all
+    check_security_files(identity);
+    check_identity(identity, settings.domain);
+  }
   set_up_domain(settings, identity);
   // One participant per process and domain, found through DDS so that FMUs linking their own copy
   // of this layer share it too: a pair of processes then makes one DDS Security handshake, and

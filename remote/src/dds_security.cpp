@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -31,15 +32,34 @@ std::string plugin_path(const char* name) {
 
 namespace {
 
+// the wrapper plugin's path and its listener setter, once watch_handshakes succeeded
+std::string g_auth_watch;
+void (*g_set_listener)(const char*, stride_handshake_listener, void*) = nullptr;
+
+fs::path auth_watch_library() {
+  std::error_code error;
+  const fs::path program = fs::read_symlink("/proc/self/exe", error);
+  if (error) return {};
+  const char* file = "libstride_dds_auth.so";
+  for (const fs::path& dir :
+       {program.parent_path() / ".." / "lib" / "stride", program.parent_path()}) {
+    if (fs::is_regular_file(dir / file, error)) return (dir / file).lexically_normal();
+  }
+  return {};
+}
+
 void check_readable(const fs::path& file, const fs::path& dir) {
   if (!fs::exists(file)) {
     throw std::runtime_error("security identity " + dir.string() + ": " + file.string() +
                              " is missing (make the identity with `stride security add KEYSTORE "
                              "NAME`)");
   }
-  if (::access(file.c_str(), R_OK) != 0) {
+  // opened, not only asked about: a folder in a file's place passes access() even for root
+  std::ifstream in(file, std::ios::binary);
+  if (!fs::is_regular_file(file) || !in || in.peek() == std::ifstream::traits_type::eof()) {
     throw std::runtime_error("security identity " + dir.string() + ": " + file.string() +
-                             " is not readable by this user");
+                             " is not a readable, non-empty file for this user (make the "
+                             "identity again with `stride security add KEYSTORE NAME`)");
   }
 }
 
@@ -60,7 +80,7 @@ std::string file_uri(const fs::path& p) {
 
 }  // namespace
 
-void add_security(dds_qos_t* qos, const fs::path& dir) {
+void check_security_files(const fs::path& dir) {
   if (!fs::is_directory(dir)) {
     throw std::runtime_error("security identity " + dir.string() +
                              " is not a folder (make one with `stride security add KEYSTORE "
@@ -69,6 +89,10 @@ void add_security(dds_qos_t* qos, const fs::path& dir) {
   const identity_files id{dir};
   for (const fs::path& f : id.all()) check_readable(f, dir);
   check_private(id.private_key());
+}
+
+void add_security(dds_qos_t* qos, const fs::path& dir) {
+  const identity_files id{dir};
   const struct {
     const char* kind;
     const char* library;
@@ -85,12 +109,41 @@ void add_security(dds_qos_t* qos, const fs::path& dir) {
     dds_qset_prop(qos, (prefix + "init").c_str(), p.init);
     dds_qset_prop(qos, (prefix + "finalize").c_str(), p.finalize);
   }
+  if (!g_auth_watch.empty()) {  // the wrapper loads the real authentication plugin itself
+    dds_qset_prop(qos, "dds.sec.auth.library.path", g_auth_watch.c_str());
+    dds_qset_prop(qos, "dds.sec.auth.library.init", "stride_init_authentication");
+    dds_qset_prop(qos, "dds.sec.auth.library.finalize", "stride_finalize_authentication");
+  }
   dds_qset_prop(qos, "dds.sec.auth.identity_ca", file_uri(id.identity_ca()).c_str());
   dds_qset_prop(qos, "dds.sec.auth.identity_certificate", file_uri(id.certificate()).c_str());
   dds_qset_prop(qos, "dds.sec.auth.private_key", file_uri(id.private_key()).c_str());
   dds_qset_prop(qos, "dds.sec.access.permissions_ca", file_uri(id.permissions_ca()).c_str());
   dds_qset_prop(qos, "dds.sec.access.governance", file_uri(id.governance()).c_str());
   dds_qset_prop(qos, "dds.sec.access.permissions", file_uri(id.permissions()).c_str());
+}
+
+bool watch_handshakes(stride_handshake_listener listener, void* context) {
+  const fs::path library = auth_watch_library();
+  if (library.empty()) return false;
+  // Cyclone's dlopen of the same path later finds this very copy, with the listener set
+  void* handle = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) return false;
+  using watch_fn = void (*)(const char*, stride_handshake_listener, void*);
+  const auto watch = reinterpret_cast<watch_fn>(::dlsym(handle, "stride_watch_handshakes"));
+  if (watch == nullptr) return false;
+  watch(plugin_path("dds_security_auth").c_str(), listener, context);
+  g_auth_watch = library.string();
+  g_set_listener = watch;
+  return true;
+}
+
+void stop_watching_handshakes() {
+  if (g_set_listener != nullptr)
+    g_set_listener(plugin_path("dds_security_auth").c_str(), nullptr, nullptr);
+}
+
+bool handshakes_watched() {
+  return !g_auth_watch.empty();
 }
 
 }  // namespace stride::remote::dds

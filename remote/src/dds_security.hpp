@@ -8,13 +8,16 @@
 
 #include <filesystem>
 
+#include "handshake_watch.h"
 #include "stride/remote/settings.hpp"
 
 namespace stride::remote::dds {
 
-/// Adds the security properties of the identity in `dir` to `qos`. \throws std::runtime_error
-/// naming the file when one is missing or unreadable, or when the private key is readable by
-/// others.
+/// \throws std::runtime_error naming the file when one of the identity in `dir` is missing or
+/// unreadable, or when its private key is readable by others.
+void check_security_files(const std::filesystem::path& dir);
+
+/// Adds the security properties of the identity in `dir` to `qos`.
 void add_security(dds_qos_t* qos, const std::filesystem::path& dir);
 
 /// Runs the identity check the process has set (set_identity_check), if any.
@@ -23,6 +26,19 @@ void check_identity(const std::filesystem::path& identity, int domain);
 /// Where the plugin library `name` (e.g. "dds_security_auth") is: Debian keeps Cyclone's plugins
 /// in a folder beside libddsc that the loader does not search.
 std::string plugin_path(const char* name);
+
+/// Makes every participant created from now on authenticate through libstride_dds_auth
+/// (remote/auth_watch), which tells `listener` how each DDS Security handshake goes. \returns
+/// false, and changes nothing, when that library is not where the program expects it (beside
+/// the program, or in ../lib/stride).
+bool watch_handshakes(stride_handshake_listener listener, void* context);
+
+/// The listener is called no more (participants made meanwhile keep the wrapper); returns when
+/// no call to it is under way.
+void stop_watching_handshakes();
+
+/// Whether watch_handshakes is in effect.
+bool handshakes_watched();
 
 }  // namespace stride::remote::dds
 

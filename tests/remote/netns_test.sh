@@ -5,7 +5,7 @@
 #  - with --insecure, the stride_test pair equals the in-process run byte for byte;
 #  - with DDS Security (a keystore made here), the walk with the robot on the worker equals the
 #    walk in process, and (when tcpdump is installed) a capture on the veth shows none of the
-#    run's names that the insecure run shows in plain text.
+#    names, variable names among them, that the insecure run shows in plain text.
 # Needs root (CAP_NET_ADMIN): otherwise it is skipped (exit 77) with the reason.
 # usage: netns_test.sh STRIDE_CLI SOURCE_DIR
 set -u
@@ -55,7 +55,13 @@ sed -e 's/stop="1"/stop="2"/' \
   "$src/tests/orchestrator/data/stride_test_pair.xml" > "$work/remote.xml"
 grep -q 'worker="far"' "$work/remote.xml" || { echo "FAILED: could not place b in the test system"; exit 1; }
 sed -e 's/stop="1"/stop="2"/' "$src/tests/orchestrator/data/stride_test_pair.xml" > "$work/local.xml"
-# the pair names its FMU by bundled name: both systems live in the scratch folder
+sed -e 's/worker="far"/worker="w1"/' "$work/remote.xml" > "$work/remote-w1.xml"
+# The pair names its FMU by bundled name; here it finds a copy stored without compression, so that
+# its variable names are plain bytes in every packet that carries the archive unencrypted.
+mkdir -p "$work/fmus/unpacked"
+(cd "$work/fmus/unpacked" && unzip -q "$(dirname "$cli")/../fmus/stride_test.fmu" &&
+  zip -q -0 -r ../stride_test.fmu .) || fail "could not repack stride_test.fmu"
+export STRIDE_FMU_PATH="$work/fmus"
 "$cli" run "$work/local.xml" --quiet --output "$work/local" || { echo "FAILED: in-process run"; exit 1; }
 
 # start_worker NAME ARGS...: a worker in namespace A, waited for until it is ready
@@ -84,10 +90,11 @@ stop_capture() {
   capture_pid=""
 }
 tcpdump="$(command -v tcpdump || true)"
-# names every run sends: the FMU archive's entry names and the partition of the run's replies.
-# (Topic names are no secret: the signed permissions document that lists them travels in the
-# clear during the DDS Security handshake, by the standard's design.)
-plain_names=(modelDescription.xml binaries/linux64 stride.run.)
+# names the pair's runs send: the FMU archive's entry names, the partition of the run's replies,
+# and variable names of stride_test from its model description. (Topic names are no secret: the
+# signed permissions document that lists them travels in the clear during the DDS Security
+# handshake, by the standard's design.)
+plain_names=(modelDescription.xml binaries/linux64 stride.run. logStatusWarning integral)
 
 # no security, no --insecure: the worker refuses to start
 if ip netns exec "$ns_a" env MY_IFACE="va$tag" PEER_ADDR=10.213.0.2 \
@@ -129,7 +136,12 @@ if ! ip netns exec "$ns_b" env MY_IFACE="vb$tag" PEER_ADDR=10.213.0.1 \
   cat "$work/worker.log"
   fail "secure walk with the robot on the worker in the other namespace"
 fi
+# and the pair, whose archive shows its variable names when nothing protects it
+ip netns exec "$ns_b" env MY_IFACE="vb$tag" PEER_ADDR=10.213.0.1 \
+  "$cli" run "$work/remote-w1.xml" --quiet --domain 5 --dds-config "$config" \
+  --security "$work/ks/orchestrator" --output "$work/secure-pair" || fail "secure pair run"
 stop_capture
+cmp "$work/local/results.csv" "$work/secure-pair/results.csv" || fail "secure pair differs"
 cmp "$work/walk-local/results.csv" "$work/walk-remote/results.csv" || fail "secure walk differs"
 grep -q "loaded robot" "$work/worker.log" || { cat "$work/worker.log"; fail "secure worker log"; }
 if [ -z "$tcpdump" ]; then

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <string>
@@ -134,17 +135,26 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
       run(system, "foreign",
           "--domain 101 --worker-timeout 3 --security " + quoted(other / "orchestrator"));
   EXPECT_NE(foreign.exit_code, 0);
-  EXPECT_THAT(foreign.err, AllOf(HasSubstr("worker 'w1' did not appear on DDS domain 101"),
-                                 HasSubstr("must come from the same keystore")));
-  // The side that answers the handshake (DDS picks it by the participants' ids) says once whom
-  // it refused and why: the worker in its log, or the run on stderr.
+  EXPECT_THAT(foreign.err,
+              AllOf(HasSubstr("worker 'w1' did not appear on DDS domain 101"),
+                    HasSubstr("unless its own comes from the same keystore"),
+                    HasSubstr((other / "orchestrator" / "identity_ca.cert.pem").string())));
+  // Both sides say once whom they refused: the side that answers the handshake (DDS picks it by
+  // the participants' ids) refuses the other's certificate, the side that asked gets no answer.
+  ASSERT_TRUE(w.wait_for("refused peer ")) << w.output();
   const std::string log = w.output();
-  const bool worker_said = log.find("refused peer ") != std::string::npos;
-  const std::string said = worker_said ? log : foreign.err;
-  EXPECT_THAT(said, AllOf(HasSubstr(worker_said ? "CN=orchestrator" : "CN=w1"),
-                          HasSubstr("unable to get local issuer")))
-      << log << foreign.err;
-  EXPECT_EQ(said.find("refused peer "), said.rfind("refused peer ")) << said;
+  EXPECT_EQ(log.find("refused peer "), log.rfind("refused peer ")) << log;
+  EXPECT_THAT(foreign.err, HasSubstr("stride: refused peer "));
+  EXPECT_EQ(foreign.err.find("refused peer "), foreign.err.rfind("refused peer ")) << foreign.err;
+  const std::string refusal = "unable to get local issuer certificate";
+  const std::string silence = "it did not answer the DDS Security handshake";
+  if (log.find(refusal) != std::string::npos) {
+    EXPECT_THAT(log, HasSubstr("CN=orchestrator: " + refusal));
+    EXPECT_THAT(foreign.err, HasSubstr(silence));
+  } else {
+    EXPECT_THAT(log, HasSubstr(silence));
+    EXPECT_THAT(foreign.err, HasSubstr("CN=w1: " + refusal));
+  }
   const auto expired = run(system, "expired", "--domain 101 --security " + quoted(ks / "expired"));
   EXPECT_NE(expired.exit_code, 0);
   EXPECT_THAT(expired.err,
@@ -157,12 +167,28 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
       run(system, "domain", "--domain 101 --security " + quoted(elsewhere / "orchestrator"));
   EXPECT_NE(domain.exit_code, 0);
   EXPECT_THAT(domain.err, AllOf(HasSubstr("permissions.p7s"), HasSubstr("domain 101")));
+  // a worker with such an identity does not start (it would serve nobody)
+  const auto expired_worker = run_command(
+      "'" + k_cli + "' worker --name w9 --domain 101 --security " + quoted(ks / "expired"),
+      scratch.path());
+  EXPECT_EQ(expired_worker.exit_code, 1);
+  EXPECT_THAT(expired_worker.err,
+              AllOf(HasSubstr((ks / "expired" / "cert.pem").string()), HasSubstr("expired")));
+  // each one line that says what to do
+  EXPECT_THAT(expired.err, HasSubstr("make a new identity with `stride security add"));
+  EXPECT_THAT(not_yet.err, HasSubstr("check this host's clock"));
+  EXPECT_THAT(domain.err, HasSubstr("`stride security init DIR --domains 101`"));
+  for (const auto* e : {&expired, &not_yet, &domain, &expired_worker}) {
+    EXPECT_EQ(std::count(e->err.begin(), e->err.end(), '\n'), 1) << e->err;
+  }
   EXPECT_THAT(w.output(), Not(HasSubstr("begins")));  // none of them reached the worker
 
   const auto proper =
       run(system, "proper", "--domain 101 --security " + quoted(ks / "orchestrator"));
   ASSERT_EQ(proper.exit_code, 0) << proper.err << w.output();
   EXPECT_THAT(w.output(), HasSubstr("loaded stride_test"));
+  EXPECT_THAT(proper.err, Not(HasSubstr("refused peer")));
+  EXPECT_EQ(w.output().find("refused peer "), w.output().rfind("refused peer ")) << w.output();
 }
 
 // `stride test --security` hands the identity to the processes of its cases. Case runs use DDS
@@ -205,6 +231,16 @@ TEST_F(secure_remote, an_identity_with_a_key_others_can_read_or_a_missing_file_i
       scratch.path());
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_THAT(missing.err, AllOf(HasSubstr("governance.p7s"), HasSubstr("missing")));
+  // a file nobody can read as one (a folder in its place: even root cannot read that)
+  fs::create_directory(ks / "orchestrator" / "governance.p7s");
+  const auto unreadable = run_command(
+      "'" + k_cli + "' workers --domain 102 --wait 0 --security " + quoted(ks / "orchestrator"),
+      scratch.path());
+  EXPECT_EQ(unreadable.exit_code, 1);
+  EXPECT_THAT(unreadable.err, AllOf(HasSubstr("governance.p7s"), HasSubstr("not a readable")));
+  for (const auto* e : {&open_key, &missing, &unreadable}) {
+    EXPECT_EQ(std::count(e->err.begin(), e->err.end(), '\n'), 1) << e->err;  // one line
+  }
 }
 
 TEST_F(secure_remote, listed_fmus_run_and_unlisted_ones_are_refused_before_touching_the_disk) {
@@ -316,8 +352,8 @@ TEST_F(secure_remote, agents_on_secure_workers_learn_what_agents_without_securit
   auto w2 = start_worker("w2", 108, {"--security", (ks / "w2").string()});
   ASSERT_TRUE(w1.ready() && w2.ready()) << w1.output() << w2.output();
   std::string xml = read(k_demo);
-  const auto at = xml.find("/>", xml.find("<simulation ")) + 2;  // <agents> follows <simulation>
-  xml.insert(at, "\n  <agents count=\"2\" workers=\"w1 w2\"/>");
+  const auto at = xml.find("/>", xml.find("<simulation ")) + 2;   // <agents> follows <simulation>
+  xml.insert(at, "\n  <agents count=\"1\" workers=\"w1 w2\"/>");  // --agents 2 below
   const fs::path system = scratch.path() / "agents.xml";
   std::ofstream(system, std::ios::binary) << xml;
   const std::string learner =
@@ -326,12 +362,15 @@ TEST_F(secure_remote, agents_on_secure_workers_learn_what_agents_without_securit
   const auto plain = run(k_demo, "plain", "--agents 2" + learner);
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   const auto secure =
-      run(system, "secure", "--domain 108 --security " + quoted(ks / "orchestrator") + learner);
+      run(system, "secure",
+          "--agents 2 --domain 108 --security " + quoted(ks / "orchestrator") + learner);
   ASSERT_EQ(secure.exit_code, 0) << secure.err << w1.output() << w2.output();
-  for (const char* f : {"agent1/v_table.csv", "agent2/steps.csv", "shared_table.csv"}) {
+  for (const char* f :
+       {"agent1/v_table.csv", "agent2/v_table.csv", "agent2/steps.csv", "shared_table.csv"}) {
     EXPECT_EQ(read(scratch.path() / "secure" / f), read(scratch.path() / "plain" / f)) << f;
   }
   EXPECT_THAT(w1.output(), HasSubstr("loaded learner"));
+  EXPECT_THAT(w2.output(), HasSubstr("loaded learner"));
 }
 #endif
 
