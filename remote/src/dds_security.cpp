@@ -142,10 +142,6 @@ void stop_watching_handshakes() {
     g_set_listener(plugin_path("dds_security_auth").c_str(), nullptr, nullptr);
 }
 
-bool handshakes_watched() {
-  return !g_auth_watch.empty();
-}
-
 }  // namespace stride::remote::dds
 
 namespace stride::remote {

@@ -37,9 +37,6 @@ bool watch_handshakes(stride_handshake_listener listener, void* context);
 /// no call to it is under way.
 void stop_watching_handshakes();
 
-/// Whether watch_handshakes is in effect.
-bool handshakes_watched();
-
 }  // namespace stride::remote::dds
 
 #endif  // STRIDE_REMOTE_DDS_SECURITY_HPP

@@ -53,10 +53,9 @@ refused_peer_log::~refused_peer_log() {
   }
   wake_.notify_all();
   if (timer_.joinable()) timer_.join();
-  // a peer this process asked a while ago and that never answered, up to its end, refused it
-  // (a run that gives up on its worker ends before the time to answer has passed)
+  // the last check, for a peer that had its time to answer since the timer last looked
   std::lock_guard lock(mutex_);
-  say_unanswered(clock::now() - std::chrono::seconds(1));
+  say_unanswered(clock::now() - answer_within_);
   if (watching_) dds_set_log_sink(nullptr, nullptr);
 }
 
@@ -96,9 +95,10 @@ void refused_peer_log::on_event(handshake_event event, std::int64_t peer, std::s
       break;
     }
     case handshake_event::ended:
-      // the peer left (or its run gave up) before it answered
+      // the peer left (or its run gave up) before it answered; one that leaves sooner than it
+      // had to answer may just have been quick (a `stride workers` listing)
       if (const auto it = asked_.find(peer); it != asked_.end()) {
-        unanswered(peer, it->second);
+        if (clock::now() - it->second.since >= answer_within_) unanswered(peer, it->second);
         asked_.erase(it);
       }
       break;

@@ -26,9 +26,11 @@ class refused_peer_log {
   /// Watches the handshakes of the participants this process creates from now on (through the
   /// wrapper plugin libstride_dds_auth) and sends each refusal to `log`, once per peer. Cyclone's
   /// own handshake messages, repeated while a refused peer is there, no longer reach stderr.
-  /// `answer_within`: how long a peer asked for a handshake may leave it unanswered.
+  /// `answer_within`: how long a peer asked for a handshake may leave it unanswered (the default
+  /// covers one resend of a lost request, which Cyclone makes after 1 s); it is said when that
+  /// time has passed, or later when it leaves or this process ends.
   explicit refused_peer_log(std::function<void(const std::string&)> log,
-                            std::chrono::milliseconds answer_within = std::chrono::seconds(3));
+                            std::chrono::milliseconds answer_within = std::chrono::seconds(2));
   ~refused_peer_log();
   refused_peer_log(const refused_peer_log&) = delete;
   refused_peer_log& operator=(const refused_peer_log&) = delete;
