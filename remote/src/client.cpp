@@ -121,7 +121,8 @@ dds_entity_t client::connect(const std::string& worker) {
               : "; a worker is out of reach of this run's identity " + identity.string() +
                     " unless its own comes from the same keystore, the one whose CA is " +
                     identity_files{identity}.identity_ca().string() +
-                    " (make it with `stride security add KEYSTORE " + worker + "`)";
+                    " (give the worker one: `stride security add " +
+                    identity.parent_path().string() + " " + worker + "`)";
       throw std::runtime_error("worker '" + worker + "' did not appear on DDS domain " +
                                std::to_string(settings_.domain) + " within " +
                                seconds.substr(0, seconds.find('.') + 2) +

@@ -138,7 +138,8 @@ TEST_F(secure_remote, runs_without_a_proper_identity_fail_and_the_worker_serves_
   EXPECT_THAT(foreign.err,
               AllOf(HasSubstr("worker 'w1' did not appear on DDS domain 101"),
                     HasSubstr("unless its own comes from the same keystore"),
-                    HasSubstr((other / "orchestrator" / "identity_ca.cert.pem").string())));
+                    HasSubstr((other / "orchestrator" / "identity_ca.cert.pem").string()),
+                    HasSubstr("`stride security add " + other.string() + " w1`")));
   // Both sides say once whom they refused: the side that answers the handshake (DDS picks it by
   // the participants' ids) refuses the other's certificate, the side that asked gets no answer.
   ASSERT_TRUE(w.wait_for("refused peer ")) << w.output();
