@@ -17,8 +17,6 @@
 
 namespace {
 
-using listener_fn = stride_handshake_listener;
-
 struct peer {
   std::string subject;     // of its certificate, when its identity token says it
   std::string ca_subject;  // of its CA, likewise
@@ -28,7 +26,7 @@ struct peer {
 struct watch {
   std::mutex mutex;
   std::string real_plugin;
-  listener_fn listener = nullptr;
+  stride_handshake_listener listener = nullptr;
   void* context = nullptr;
   void* library = nullptr;
   int (*real_finalize)(void*) = nullptr;
@@ -55,8 +53,6 @@ std::string property(const DDS_Security_IdentityToken* token, const char* name) 
   return {};
 }
 
-// The listener is called with the lock held, so that stride_watch_handshakes(…, nullptr, …)
-// returns only when no call to the listener it replaces is under way.
 std::string participant(const DDS_Security_GUID_t* guid) {
   if (guid == nullptr) return {};
   const unsigned char* b = guid->prefix;
@@ -69,6 +65,8 @@ std::string participant(const DDS_Security_GUID_t* guid) {
   return text;
 }
 
+// The listener is called with the lock held, so that stride_watch_handshakes(…, nullptr, …)
+// returns only when no call to the listener it replaces is under way.
 void tell(stride_handshake_event event, std::int64_t remote, const char* detail) {
   watch& w = the_watch();
   std::lock_guard lock(w.mutex);
