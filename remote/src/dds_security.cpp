@@ -32,9 +32,27 @@ std::string plugin_path(const char* name) {
 
 namespace {
 
-// the wrapper plugin's path and its listener setter, once watch_handshakes succeeded
+// The wrapper plugin, once watch_handshakes found it, and the listener it is to get: the plugin
+// is loaded with the first secure participant, so that a process without security never loads
+// it (under LeakSanitizer, its mere presence made the leak check crash in a run of threads).
 std::string g_auth_watch;
+stride_handshake_listener g_listener = nullptr;
+void* g_listener_context = nullptr;
 void (*g_set_listener)(const char*, stride_handshake_listener, void*) = nullptr;
+
+// loads the wrapper and hands it the listener; false leaves Cyclone's plugin in charge
+bool load_auth_watch() {
+  if (g_set_listener != nullptr) return true;
+  // Cyclone's dlopen of the same path later finds this very copy, with the listener set
+  void* handle = ::dlopen(g_auth_watch.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) return false;
+  using watch_fn = void (*)(const char*, stride_handshake_listener, void*);
+  const auto watch = reinterpret_cast<watch_fn>(::dlsym(handle, "stride_watch_handshakes"));
+  if (watch == nullptr) return false;
+  watch(plugin_path("dds_security_auth").c_str(), g_listener, g_listener_context);
+  g_set_listener = watch;
+  return true;
+}
 
 fs::path auth_watch_library() {
   std::error_code error;
@@ -109,7 +127,7 @@ void add_security(dds_qos_t* qos, const fs::path& dir) {
     dds_qset_prop(qos, (prefix + "init").c_str(), p.init);
     dds_qset_prop(qos, (prefix + "finalize").c_str(), p.finalize);
   }
-  if (!g_auth_watch.empty()) {  // the wrapper loads the real authentication plugin itself
+  if (g_listener != nullptr && load_auth_watch()) {  // it loads Cyclone's plugin itself
     dds_qset_prop(qos, "dds.sec.auth.library.path", g_auth_watch.c_str());
     dds_qset_prop(qos, "dds.sec.auth.library.init", "stride_init_authentication");
     dds_qset_prop(qos, "dds.sec.auth.library.finalize", "stride_finalize_authentication");
@@ -125,21 +143,17 @@ void add_security(dds_qos_t* qos, const fs::path& dir) {
 bool watch_handshakes(stride_handshake_listener listener, void* context) {
   const fs::path library = auth_watch_library();
   if (library.empty()) return false;
-  // Cyclone's dlopen of the same path later finds this very copy, with the listener set
-  void* handle = ::dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (handle == nullptr) return false;
-  using watch_fn = void (*)(const char*, stride_handshake_listener, void*);
-  const auto watch = reinterpret_cast<watch_fn>(::dlsym(handle, "stride_watch_handshakes"));
-  if (watch == nullptr) return false;
-  watch(plugin_path("dds_security_auth").c_str(), listener, context);
   g_auth_watch = library.string();
-  g_set_listener = watch;
+  g_listener = listener;
+  g_listener_context = context;
   return true;
 }
 
 void stop_watching_handshakes() {
-  if (g_set_listener != nullptr)
+  g_listener = nullptr;
+  if (g_set_listener != nullptr) {
     g_set_listener(plugin_path("dds_security_auth").c_str(), nullptr, nullptr);
+  }
 }
 
 }  // namespace stride::remote::dds

@@ -27,10 +27,10 @@ void check_identity(const std::filesystem::path& identity, int domain);
 /// in a folder beside libddsc that the loader does not search.
 std::string plugin_path(const char* name);
 
-/// Makes every participant created from now on authenticate through libstride_dds_auth
-/// (remote/auth_watch), which tells `listener` how each DDS Security handshake goes. \returns
-/// false, and changes nothing, when that library is not where the program expects it (beside
-/// the program, or in ../lib/stride).
+/// Makes every secure participant created from now on authenticate through libstride_dds_auth
+/// (remote/auth_watch, loaded with the first of them), which tells `listener` how each DDS
+/// Security handshake goes. \returns false, and changes nothing, when that library is not where
+/// the program expects it (beside the program, or in ../lib/stride).
 bool watch_handshakes(stride_handshake_listener listener, void* context);
 
 /// The listener is called no more (participants made meanwhile keep the wrapper); returns when
