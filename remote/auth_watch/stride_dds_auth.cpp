@@ -178,12 +178,12 @@ DDS_Security_boolean return_handshake_handle(dds_security_authentication* self,
 DDS_Security_boolean return_identity_handle(dds_security_authentication* self,
                                             const DDS_Security_IdentityHandle identity,
                                             DDS_Security_SecurityException* ex) {
+  watch& w = the_watch();
   {
-    watch& w = the_watch();
     std::lock_guard lock(w.mutex);
     w.peers.erase(identity);
   }
-  return the_watch().real.return_identity_handle(self, identity, ex);
+  return w.real.return_identity_handle(self, identity, ex);
 }
 
 }  // namespace

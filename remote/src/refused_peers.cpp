@@ -63,9 +63,7 @@ void refused_peer_log::start_timer() {
   timer_ = std::thread([this] {
     std::unique_lock lock(mutex_);
     while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return stopping_; })) {
-      lock.unlock();
-      check_unanswered(clock::now());
-      lock.lock();
+      say_unanswered(clock::now() - answer_within_);
     }
   });
 }

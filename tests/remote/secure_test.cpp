@@ -219,24 +219,23 @@ TEST_F(secure_remote, a_suite_case_reaches_a_secure_worker_through_test_security
 TEST_F(secure_remote, an_identity_with_a_key_others_can_read_or_a_missing_file_is_named) {
   const fs::path ks = keystore("ks", {"orchestrator"}, "102");
   const fs::path key = ks / "orchestrator" / "key.pem";
+  const auto list_workers = [&] {
+    return run_command(
+        "'" + k_cli + "' workers --domain 102 --wait 0 --security " + quoted(ks / "orchestrator"),
+        scratch.path());
+  };
   ::chmod(key.c_str(), 0644);
-  const auto open_key = run_command(
-      "'" + k_cli + "' workers --domain 102 --wait 0 --security " + quoted(ks / "orchestrator"),
-      scratch.path());
+  const auto open_key = list_workers();
   EXPECT_EQ(open_key.exit_code, 1);
   EXPECT_THAT(open_key.err, AllOf(HasSubstr(key.string()), HasSubstr("chmod 600")));
   ::chmod(key.c_str(), 0600);
   fs::remove(ks / "orchestrator" / "governance.p7s");
-  const auto missing = run_command(
-      "'" + k_cli + "' workers --domain 102 --wait 0 --security " + quoted(ks / "orchestrator"),
-      scratch.path());
+  const auto missing = list_workers();
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_THAT(missing.err, AllOf(HasSubstr("governance.p7s"), HasSubstr("missing")));
   // a file nobody can read as one (a folder in its place: even root cannot read that)
   fs::create_directory(ks / "orchestrator" / "governance.p7s");
-  const auto unreadable = run_command(
-      "'" + k_cli + "' workers --domain 102 --wait 0 --security " + quoted(ks / "orchestrator"),
-      scratch.path());
+  const auto unreadable = list_workers();
   EXPECT_EQ(unreadable.exit_code, 1);
   EXPECT_THAT(unreadable.err, AllOf(HasSubstr("governance.p7s"), HasSubstr("not a readable")));
   for (const auto* e : {&open_key, &missing, &unreadable}) {

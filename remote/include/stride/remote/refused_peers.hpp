@@ -35,9 +35,6 @@ class refused_peer_log {
   refused_peer_log(const refused_peer_log&) = delete;
   refused_peer_log& operator=(const refused_peer_log&) = delete;
 
-  /// Whether the handshakes are watched (false when libstride_dds_auth was not found).
-  bool watching() const { return watching_; }
-
   /// One step of the handshake with `peer` (the plugin's handle of its identity).
   void on_event(handshake_event event, std::int64_t peer, std::string_view subject,
                 std::string_view ca_subject, std::string_view detail);
