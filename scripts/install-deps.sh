@@ -9,7 +9,7 @@ packages=(
   g++ cmake ninja-build pkg-config make
   libode-dev liburdfdom-dev libassimp-dev libeigen3-dev libceres-dev
   libtinyxml2-dev libzip-dev libsundials-dev zipcmp zipmerge ziptool zip unzip
-  libcli11-dev cyclonedds-dev cyclonedds-tools libssl-dev iproute2 tcpdump
+  libcli11-dev cyclonedds-dev cyclonedds-tools libssl-dev iproute2 tcpdump linux-perf
   libgtest-dev libgmock-dev libbenchmark-dev
   valgrind libxml2-utils binutils patchelf clang-format gnuplot-nox python3
   clang libclang-rt-dev llvm gcovr
