@@ -39,18 +39,26 @@ std::string g_auth_watch;
 stride_handshake_listener g_listener = nullptr;
 void* g_listener_context = nullptr;
 void (*g_set_listener)(const char*, stride_handshake_listener, void*) = nullptr;
+std::atomic<bool> g_loaded{false};  // read by DDS's threads (the log sink)
 
-// loads the wrapper and hands it the listener; false leaves Cyclone's plugin in charge
+// loads the wrapper and hands it the listener; false leaves Cyclone's plugin in charge, and a
+// wrapper that cannot be loaded is not tried again
 bool load_auth_watch() {
   if (g_set_listener != nullptr) return true;
+  if (g_auth_watch.empty()) return false;
   // Cyclone's dlopen of the same path later finds this very copy, with the listener set
   void* handle = ::dlopen(g_auth_watch.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (handle == nullptr) return false;
   using watch_fn = void (*)(const char*, stride_handshake_listener, void*);
-  const auto watch = reinterpret_cast<watch_fn>(::dlsym(handle, "stride_watch_handshakes"));
-  if (watch == nullptr) return false;
+  const auto watch = handle == nullptr
+                         ? nullptr
+                         : reinterpret_cast<watch_fn>(::dlsym(handle, "stride_watch_handshakes"));
+  if (watch == nullptr) {
+    g_auth_watch.clear();
+    return false;
+  }
   watch(plugin_path("dds_security_auth").c_str(), g_listener, g_listener_context);
   g_set_listener = watch;
+  g_loaded = true;
   return true;
 }
 
@@ -141,12 +149,20 @@ void add_security(dds_qos_t* qos, const fs::path& dir) {
 }
 
 bool watch_handshakes(stride_handshake_listener listener, void* context) {
-  const fs::path library = auth_watch_library();
+  return watch_handshakes_through(auth_watch_library(), listener, context);
+}
+
+bool watch_handshakes_through(const fs::path& library, stride_handshake_listener listener,
+                              void* context) {
   if (library.empty()) return false;
   g_auth_watch = library.string();
   g_listener = listener;
   g_listener_context = context;
   return true;
+}
+
+bool handshakes_watched() {
+  return g_loaded;
 }
 
 void stop_watching_handshakes() {

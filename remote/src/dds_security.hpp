@@ -33,6 +33,15 @@ std::string plugin_path(const char* name);
 /// the program expects it (beside the program, or in ../lib/stride).
 bool watch_handshakes(stride_handshake_listener listener, void* context);
 
+/// watch_handshakes with the wrapper library at `library` (empty: none).
+bool watch_handshakes_through(const std::filesystem::path& library,
+                              stride_handshake_listener listener, void* context);
+
+/// Whether handshakes reach the listener: the wrapper was loaded, with the first secure
+/// participant. False when it could not be: Cyclone's plugin then authenticates alone and its
+/// own log messages are all there is to say how handshakes go.
+bool handshakes_watched();
+
 /// The listener is called no more (participants made meanwhile keep the wrapper); returns when
 /// no call to it is under way.
 void stop_watching_handshakes();

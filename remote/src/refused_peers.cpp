@@ -11,11 +11,11 @@ namespace stride::remote {
 
 namespace {
 
-// Cyclone's handshake messages say again and again what the listener says once; the others are
-// written as the default sink would
+// Cyclone's handshake messages say again and again what the listener says once (without the
+// wrapper they are all there is, and pass); the others are written as the default sink would
 void sink(void*, const dds_log_data_t* data) {
   const std::string_view message(data->message, data->size);
-  if (message.find("andshake") != std::string_view::npos) return;
+  if (dds::handshakes_watched() && message.find("andshake") != std::string_view::npos) return;
   std::fwrite(data->message, 1, data->size, stderr);
   if (!message.ends_with('\n')) std::fputc('\n', stderr);
   std::fflush(stderr);
