@@ -22,27 +22,81 @@ function find_chromium() {
                   'installs it, STRIDE_CHROMIUM names another binary)');
 }
 
-async function launch({width = 1000, height = 700} = {}) {
-  if (typeof WebSocket === 'undefined') {
-    throw new Error('node has no WebSocket: run it with --experimental-websocket (node >= 20.10)');
-  }
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'stride-chromium-'));
+// Chromium normally reports its DevTools endpoint within a second. A start that hangs (seen once
+// in CI under load, with nothing on stderr) is killed, described and tried again: the page test
+// is about the viewer, not about one stuck browser start.
+const START_ATTEMPTS = 3;
+const START_TIMEOUT_MS = 30000;
+
+function spawn_chromium(profile, width, height) {
   // software WebGL (SwiftShader): the same pixels on any machine, no GPU needed
-  const proc = spawn(find_chromium(), [
+  return spawn(find_chromium(), [
     '--headless', '--no-sandbox', '--disable-gpu', '--use-angle=swiftshader',
     '--enable-unsafe-swiftshader', '--no-first-run', '--disable-extensions',
-    '--remote-debugging-port=0', `--user-data-dir=${profile}`, `--window-size=${width},${height}`,
-    'about:blank'], {stdio: ['ignore', 'ignore', 'pipe']});
-  const endpoint = await new Promise((resolve, reject) => {
+    '--disable-dev-shm-usage', '--remote-debugging-port=0', `--user-data-dir=${profile}`,
+    `--window-size=${width},${height}`, 'about:blank'],
+    {stdio: ['ignore', 'ignore', 'pipe'], detached: true});
+}
+
+// state and kernel wait channel of every process of the group: where a hung start waits
+function describe_group(pid) {
+  try {
+    return execFileSync('ps', ['-g', String(pid), '-o', 'pid,stat,wchan:32,etime,args'])
+        .toString();
+  } catch (e) {
+    return '(ps failed: ' + e.message + ')';
+  }
+}
+
+function kill_group(proc) {
+  try {
+    process.kill(-proc.pid, 'SIGKILL');
+  } catch (e) {
+    // already gone
+  }
+}
+
+function await_endpoint(proc) {
+  return new Promise((resolve, reject) => {
     let text = '';
-    const timer = setTimeout(() => reject(new Error('chromium did not start: ' + text)), 20000);
+    const timer = setTimeout(() => {
+      const where = describe_group(proc.pid);
+      kill_group(proc);
+      reject(new Error(`chromium did not start in ${START_TIMEOUT_MS / 1000} s; stderr: ` +
+                       text + '\nprocesses:\n' + where));
+    }, START_TIMEOUT_MS);
     proc.stderr.on('data', (chunk) => {
       text += chunk.toString();
       const m = /DevTools listening on (ws:\/\/\S+)/.exec(text);
       if (m) { clearTimeout(timer); resolve(m[1]); }
     });
-    proc.on('exit', (code) => reject(new Error('chromium exited (' + code + '): ' + text)));
+    proc.on('exit', (code) => {
+      clearTimeout(timer);
+      reject(new Error('chromium exited (' + code + '): ' + text));
+    });
   });
+}
+
+// a fresh profile per attempt: a killed start may leave its profile locked
+async function start_chromium(width, height) {
+  for (let attempt = 1;; ++attempt) {
+    const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'stride-chromium-'));
+    const proc = spawn_chromium(profile, width, height);
+    try {
+      return {proc, profile, endpoint: await await_endpoint(proc)};
+    } catch (e) {
+      fs.rmSync(profile, {recursive: true, force: true});
+      if (attempt === START_ATTEMPTS) throw e;
+      process.stderr.write(`attempt ${attempt} of ${START_ATTEMPTS}: ${e.message}\n`);
+    }
+  }
+}
+
+async function launch({width = 1000, height = 700} = {}) {
+  if (typeof WebSocket === 'undefined') {
+    throw new Error('node has no WebSocket: run it with --experimental-websocket (node >= 20.10)');
+  }
+  const {proc, profile, endpoint} = await start_chromium(width, height);
   const ws = new WebSocket(endpoint);
   await new Promise((resolve, reject) => { ws.onopen = resolve; ws.onerror = reject; });
   let next_id = 1;
