@@ -16,6 +16,8 @@
 # usage: bench/remote/failover.sh [REPEAT] [BUILD_DIR] [DOMAIN] (defaults 5, build/, 153)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
+# shellcheck source=bench/remote/lib.sh
+source "$root/bench/remote/lib.sh"
 repeat="${1:-5}"
 build="${2:-$root/build}"
 domain="${3:-153}"
@@ -31,9 +33,7 @@ trap 'for p in "${pids[@]}"; do kill -TERM "$p" 2>/dev/null; done; wait; rm -rf 
 start_worker() {  # NAME [ARGS...]: starts it and waits until it is ready
   "$stride" worker --name "$1" --domain "$domain" "${@:2}" > "$out/$1.log" 2>&1 &
   pids[$1]=$!
-  for _ in $(seq 100); do grep -q ready "$out/$1.log" && return; sleep 0.1; done
-  cat "$out/$1.log" >&2
-  exit 1
+  wait_ready "$out/$1.log"
 }
 start_worker w1
 start_worker s1

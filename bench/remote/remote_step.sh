@@ -19,6 +19,8 @@
 #        (defaults 5, build/, 90, none)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
+# shellcheck source=bench/remote/lib.sh
+source "$root/bench/remote/lib.sh"
 repeat="${1:-5}"
 build="${2:-$root/build}"
 domain="${3:-90}"
@@ -33,8 +35,7 @@ w1_args=() w2_args=() run_args=(--domain "$domain")
 case "$security" in
   none) ;;
   sign | encrypt)
-    "$stride" security init "$out/ks" --domains "$domain" --protection "$security" > /dev/null
-    for id in w1 w2 orchestrator; do "$stride" security add "$out/ks" "$id" > /dev/null; done
+    make_keystore "$stride" "$out/ks" "$domain" "$security" w1 w2 orchestrator
     w1_args=(--security "$out/ks/w1") w2_args=(--security "$out/ks/w2")
     run_args+=(--security "$out/ks/orchestrator") ;;
   *) echo "remote_step: SECURITY is none, sign or encrypt, not '$security'" >&2; exit 1 ;;
@@ -44,10 +45,7 @@ echo "security: $security"
 worker=$!
 "$stride" worker --name w2 --domain "$domain" "${w2_args[@]}" > "$out/worker2.log" 2>&1 &
 worker="$worker $!"
-for log in worker worker2; do
-  for _ in $(seq 100); do grep -q ready "$out/$log.log" && break; sleep 0.1; done
-  grep -q ready "$out/$log.log" || { cat "$out/$log.log" >&2; exit 1; }
-done
+for log in worker worker2; do wait_ready "$out/$log.log"; done
 sed -e 's|<component name="robot" fmu="robot" worker="w1"/>|<component name="robot" fmu="robot" worker="w2"/>|' \
   "$root/models/distributed/walk-on-one-worker.xml" > "$out/walk-split.xml"
 grep -q 'worker="w2"' "$out/walk-split.xml" || { echo "remote_step: cannot split the walk" >&2; exit 1; }

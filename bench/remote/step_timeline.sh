@@ -18,6 +18,8 @@
 #        (defaults none, build/, 186, 8)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
+# shellcheck source=bench/remote/lib.sh
+source "$root/bench/remote/lib.sh"
 mode="${1:-none}"
 build="${2:-$root/build}"
 domain="${3:-186}"
@@ -43,14 +45,12 @@ sed -e "s/stop=\"60\"/stop=\"$stop\"/" "$root/models/distributed/walk-robot-on-w
   > "$out/walk.xml"
 worker_args=() run_args=(--domain "$domain" --quiet)
 if [ "$mode" != none ]; then
-  "$stride" security init "$out/ks" --domains "$domain" --protection "$mode" > /dev/null
-  for id in w1 orchestrator; do "$stride" security add "$out/ks" "$id" > /dev/null; done
+  make_keystore "$stride" "$out/ks" "$domain" "$mode" w1 orchestrator
   worker_args=(--security "$out/ks/w1") run_args+=(--security "$out/ks/orchestrator")
 fi
 "$stride" worker --name w1 --domain "$domain" "${worker_args[@]}" > "$out/worker.log" 2>&1 &
 worker=$!
-for _ in $(seq 100); do grep -q ready "$out/worker.log" && break; sleep 0.1; done
-grep -q ready "$out/worker.log" || { cat "$out/worker.log" >&2; exit 1; }
+wait_ready "$out/worker.log"
 # the first run ships the FMU; the traced one finds it on the worker
 "$stride" run "$out/walk.xml" "${run_args[@]}" --output "$out/first" > /dev/null
 # the trace holds every process of the machine: the run writes its process id (the shell's, which

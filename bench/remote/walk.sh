@@ -14,6 +14,8 @@
 #        (defaults 15, build/, 174, none, 60)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
+# shellcheck source=bench/remote/lib.sh
+source "$root/bench/remote/lib.sh"
 repeat="${1:-15}"
 IFS=, read -r -a builds <<< "${2:-$root/build}"
 domain="${3:-174}"
@@ -51,15 +53,13 @@ for b in "${builds[@]}"; do
     fi
     run_args[k]="$out/walk-robot-on-worker.xml --domain $d --quiet"
     if [ "$m" != none ]; then
-      "$stride" security init "$out/ks$k" --domains "$d" --protection "$m" > /dev/null
-      for id in w1 orchestrator; do "$stride" security add "$out/ks$k" "$id" > /dev/null; done
+      make_keystore "$stride" "$out/ks$k" "$d" "$m" w1 orchestrator
       worker_args=(--security "$out/ks$k/w1")
       run_args[k]+=" --security $out/ks$k/orchestrator"
     fi
     "$stride" worker --name w1 --domain "$d" "${worker_args[@]}" > "$out/worker$k.log" 2>&1 &
     workers+=($!)
-    for _ in $(seq 100); do grep -q ready "$out/worker$k.log" && break; sleep 0.1; done
-    grep -q ready "$out/worker$k.log" || { cat "$out/worker$k.log" >&2; exit 1; }
+    wait_ready "$out/worker$k.log"
   done
 done
 

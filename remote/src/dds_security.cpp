@@ -38,8 +38,8 @@ namespace {
 std::string g_auth_watch;
 stride_handshake_listener g_listener = nullptr;
 void* g_listener_context = nullptr;
-void (*g_set_listener)(const char*, stride_handshake_listener, void*) = nullptr;
-std::atomic<bool> g_loaded{false};  // read by DDS's threads (the log sink)
+using watch_fn = void (*)(const char*, stride_handshake_listener, void*);
+std::atomic<watch_fn> g_set_listener{nullptr};  // set once loaded; read by DDS's threads (log sink)
 
 // loads the wrapper and hands it the listener; false leaves Cyclone's plugin in charge, and a
 // wrapper that cannot be loaded is not tried again
@@ -48,7 +48,6 @@ bool load_auth_watch() {
   if (g_auth_watch.empty()) return false;
   // Cyclone's dlopen of the same path later finds this very copy, with the listener set
   void* handle = ::dlopen(g_auth_watch.c_str(), RTLD_NOW | RTLD_LOCAL);
-  using watch_fn = void (*)(const char*, stride_handshake_listener, void*);
   const auto watch = handle == nullptr
                          ? nullptr
                          : reinterpret_cast<watch_fn>(::dlsym(handle, "stride_watch_handshakes"));
@@ -58,7 +57,6 @@ bool load_auth_watch() {
   }
   watch(plugin_path("dds_security_auth").c_str(), g_listener, g_listener_context);
   g_set_listener = watch;
-  g_loaded = true;
   return true;
 }
 
@@ -162,13 +160,13 @@ bool watch_handshakes_through(const fs::path& library, stride_handshake_listener
 }
 
 bool handshakes_watched() {
-  return g_loaded;
+  return g_set_listener != nullptr;
 }
 
 void stop_watching_handshakes() {
   g_listener = nullptr;
-  if (g_set_listener != nullptr) {
-    g_set_listener(plugin_path("dds_security_auth").c_str(), nullptr, nullptr);
+  if (const watch_fn set = g_set_listener; set != nullptr) {
+    set(plugin_path("dds_security_auth").c_str(), nullptr, nullptr);
   }
 }
 
